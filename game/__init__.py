@@ -1,0 +1,9 @@
+"""Tile Hopper: a pygame platformer whose code teaches 2D collision detection.
+
+Start reading at :mod:`game.world` (one tick, top to bottom) and :mod:`game.movement`
+(the swept x and y passes). The README maps every technique to its module.
+"""
+
+import os
+
+os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")  # keep the console for the game's own words

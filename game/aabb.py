@@ -1,0 +1,120 @@
+"""Axis-aligned bounding boxes with exact float edges.
+
+Where it sits: the bottom of the dependency ladder. Every other collision module speaks in
+``Box`` values; nothing here knows about sprites, tiles or the screen.
+
+What it teaches:
+  * A box is ``x <= px < x + w`` on each axis: the left/top edge is inside, the right/bottom
+    edge is not. Two boxes that only *touch* (one's right edge equals the other's left edge)
+    do not overlap. This is the rule ``pygame.Rect.colliderect`` uses, written with strict
+    inequalities.
+  * A box with zero width or height overlaps nothing, not even itself.
+  * Positions are floats. pygame 2.6 ``Rect`` coordinates are integers, so a Rect cannot
+    hold a body that moves 0.4 px per tick; the exact position lives here and the Rect is
+    derived from it with ``math.floor`` (see :func:`Box.to_rect`).
+
+>>> a = Box(0, 0, 16, 16)
+>>> a.overlaps(Box(16, 0, 16, 16))       # edges touch: no overlap
+False
+>>> a.overlaps(Box(15.5, 0, 16, 16))
+True
+>>> Box(0, 0, 0, 16).overlaps(Box(-5, -5, 50, 50))
+False
+>>> Box(10.4, -0.5, 12, 14).to_rect()
+<rect(10, -1, 12, 14)>
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import pygame
+
+
+class Box(NamedTuple):
+    """A rectangle with float position and size: ``x``/``y`` is the top-left corner."""
+
+    x: float
+    y: float
+    w: float
+    h: float
+
+    @property
+    def left(self) -> float:
+        return self.x
+
+    @property
+    def top(self) -> float:
+        return self.y
+
+    @property
+    def right(self) -> float:
+        return self.x + self.w
+
+    @property
+    def bottom(self) -> float:
+        return self.y + self.h
+
+    def overlaps(self, other: Box) -> bool:
+        """True when the interiors intersect; touching edges and empty boxes never overlap."""
+        return (
+            self.w > 0
+            and self.h > 0
+            and other.w > 0
+            and other.h > 0
+            and self.x < other.x + other.w
+            and other.x < self.x + self.w
+            and self.y < other.y + other.h
+            and other.y < self.y + self.h
+        )
+
+    def moved(self, dx: float = 0.0, dy: float = 0.0) -> Box:
+        """This box shifted by ``(dx, dy)``.
+
+        >>> Box(1, 2, 3, 4).moved(dx=10)
+        Box(x=11, y=2, w=3, h=4)
+        """
+        return Box(self.x + dx, self.y + dy, self.w, self.h)
+
+    def union(self, other: Box) -> Box:
+        """The smallest box holding both: the region a body sweeps through in one axis step.
+
+        >>> Box(0, 0, 10, 10).union(Box(25, 0, 10, 10))
+        Box(x=0, y=0, w=35, h=10)
+        """
+        left = min(self.x, other.x)
+        top = min(self.y, other.y)
+        return Box(left, top, max(self.right, other.right) - left,
+                   max(self.bottom, other.bottom) - top)
+
+    def penetration(self, other: Box) -> float:
+        """How far the two boxes overlap along their shallower axis; 0.0 when they do not.
+
+        >>> Box(0, 0, 10, 10).penetration(Box(8, 3, 10, 10))
+        2
+        """
+        if not self.overlaps(other):
+            return 0.0
+        depth_x = min(self.right, other.right) - max(self.x, other.x)
+        depth_y = min(self.bottom, other.bottom) - max(self.y, other.y)
+        return min(depth_x, depth_y)
+
+    def is_finite(self) -> bool:
+        """False if any field is NaN or infinite: such a box must never become a Rect.
+
+        >>> Box(float("nan"), 0, 1, 1).is_finite()
+        False
+        """
+        return all(math.isfinite(v) for v in self)
+
+    def to_rect(self) -> pygame.Rect:
+        """The integer Rect that draws this box: ``floor`` of the corner, never ``int()``.
+
+        ``int(-0.5)`` is ``0`` but the box starts half a pixel left of 0, so ``floor`` it is.
+        Refuses NaN and infinities, which pygame would silently turn into -2147483648.
+        """
+        if not self.is_finite():
+            raise ValueError(f"cannot make a Rect from a non-finite box {self}")
+        return pygame.Rect(math.floor(self.x), math.floor(self.y),
+                           math.ceil(self.w), math.ceil(self.h))

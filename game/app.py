@@ -1,0 +1,158 @@
+"""Running the game: headless for scripts and tests, or in a window for people.
+
+Where it sits: the top of the dependency ladder. It owns the clock, the window, the keyboard
+and the files a run writes; the simulation below it never sees any of them.
+
+A frame in the window, in order:
+
+1. **Events**: quit, pause, F1 (debug overlay), F11 (fullscreen), menu keys.
+2. **Ticks**: the fixed-step loop (:mod:`game.loop`) says how many 1/60 s ticks are due;
+   each one reads the held actions (keyboard or script) and calls ``Campaign.tick``.
+3. **Draw**: world, HUD, the debug overlay if on, then any screen (title, pause, ...).
+
+Headless runs skip 1 and 3 and step as fast as the machine allows.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import time
+from dataclasses import dataclass, field
+from enum import Enum
+from pathlib import Path
+
+import pygame
+
+from game.campaign import Campaign, Outcome
+from game.files import write_atomically, write_text_atomically
+from game.inputs import NOTHING, Action, Actions, InputScript, InputScriptError, Recorder
+from game.level import Level
+from game.levels import FIRST_LEVEL, LevelError, load_level
+from game.loop import FixedStep
+from game.report import Timing, build_report
+
+HEADLESS_TICK_LIMIT = 60 * 60 * 60  # an hour of game time: a run with no --ticks still ends
+WINDOW_SCALE = 3                     # initial window size: the 320x180 view times this
+TARGET_FPS = 60
+EXIT_OK, EXIT_BAD_FILE, EXIT_USAGE = 0, 1, 2
+
+KEYS: dict[Action, tuple[int, ...]] = {
+    Action.LEFT: (pygame.K_LEFT, pygame.K_a),
+    Action.RIGHT: (pygame.K_RIGHT, pygame.K_d),
+    Action.UP: (pygame.K_UP, pygame.K_w),
+    Action.DOWN: (pygame.K_DOWN, pygame.K_s),
+    Action.JUMP: (pygame.K_SPACE, pygame.K_z, pygame.K_UP, pygame.K_w),
+}
+
+
+def held_keys() -> Actions:
+    """The actions whose keys are down right now."""
+    pressed = pygame.key.get_pressed()
+    return frozenset(a for a, keys in KEYS.items() if any(pressed[k] for k in keys))
+
+
+def level_label(path: Path) -> str:
+    """A level's path as the report shows it: relative to the working folder when inside it."""
+    if not path.is_absolute():
+        return path.as_posix()
+    try:
+        return path.relative_to(Path.cwd()).as_posix()
+    except ValueError:
+        return path.as_posix()
+
+
+def fail(message: str, status: int) -> int:
+    print(message, file=sys.stderr)
+    return status
+
+
+@dataclass
+class Run:
+    """What every kind of run shares: the campaign, the input source and what to write."""
+
+    campaign: Campaign
+    script: InputScript | None
+    args: argparse.Namespace
+    recorder: Recorder = field(default_factory=Recorder)
+    timing: Timing = field(default_factory=Timing)
+
+    def tick(self, keyboard: Actions = NOTHING) -> None:
+        """One simulation tick with input from the script, else from the keyboard."""
+        held = self.script.held_at(self.campaign.ticks) if self.script else keyboard
+        self.recorder.observe(self.campaign.ticks, held)
+        started = time.perf_counter()
+        self.campaign.tick(held)
+        self.timing.add(time.perf_counter() - started, self.campaign.world.stats.collision_s)
+
+    def finished(self) -> bool:
+        ticks = self.args.ticks
+        return (self.campaign.outcome is not Outcome.RUNNING
+                or (ticks is not None and self.campaign.ticks >= ticks))
+
+    def write_outputs(self, frame: pygame.Surface | None) -> None:
+        if self.args.record:
+            write_text_atomically(self.args.record, self.recorder.text())
+        if self.args.report:
+            report = build_report(self.campaign, level_label(self.campaign.world.level.path),
+                                  self.timing)
+            write_text_atomically(self.args.report, json.dumps(report, indent=2) + "\n")
+        if self.args.screenshot and frame is not None:
+            write_atomically(self.args.screenshot, lambda tmp: pygame.image.save(frame, str(tmp)))
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the game as the options ask; return the exit status."""
+    script: InputScript | None = None
+    if args.inputs:
+        try:
+            script = InputScript.load(args.inputs)
+        except OSError as error:
+            return fail(f"{args.inputs}: cannot read the input script ({error.strerror}) — "
+                        "check the path", EXIT_BAD_FILE)
+        except UnicodeDecodeError:
+            return fail(f"{args.inputs}: the input script is not UTF-8 text — "
+                        "save it as plain text", EXIT_BAD_FILE)
+        except InputScriptError as error:
+            return fail(str(error), EXIT_USAGE)
+    first_level = args.level or FIRST_LEVEL
+    needs_pictures = not args.headless or args.screenshot is not None
+    if needs_pictures:
+        pygame.display.init()
+        pygame.font.init()
+        flags = 0 if args.headless else pygame.SCALED | pygame.RESIZABLE
+        from game.camera import VIEW_H_PX, VIEW_W_PX  # noqa: PLC0415
+        pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX), flags)
+        pygame.display.set_caption("Tile Hopper")
+
+    def loader(path: Path) -> Level:
+        return load_level(path, images=needs_pictures)
+
+    try:
+        campaign = Campaign(first_level, loader=loader)
+        game_run = Run(campaign, script, args)
+        if args.headless:
+            return run_headless(game_run)
+        from game.window import play_in_window  # noqa: PLC0415
+
+        return play_in_window(game_run)
+    except LevelError as error:
+        return fail(str(error), EXIT_BAD_FILE)
+    finally:
+        pygame.quit()
+
+
+def run_headless(game_run: Run) -> int:
+    """Step without a window until the run ends; render one frame if a screenshot is asked."""
+    limit = game_run.args.ticks if game_run.args.ticks is not None else HEADLESS_TICK_LIMIT
+    while not game_run.finished() and game_run.campaign.ticks < limit:
+        game_run.tick()
+    frame = None
+    if game_run.args.screenshot:
+        from game.window import render_frame  # noqa: PLC0415
+
+        frame = render_frame(game_run.campaign, debug=game_run.args.debug)
+    game_run.write_outputs(frame)
+    return EXIT_OK

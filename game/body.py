@@ -1,0 +1,42 @@
+"""A moving body: a sprite whose exact position is a float box and whose Rect follows it.
+
+Where it sits: the base of :class:`game.player.Player` and :class:`game.enemy.Enemy`.
+
+What it teaches: pygame 2.6 Rects hold integers, so ``rect.x += 0.4`` never moves anything.
+The true position is the float :class:`~game.aabb.Box`; :meth:`Body.place` is the *one*
+place the Rect is derived from it (with ``math.floor``, inside ``Box.to_rect``), so the
+drawn sprite and the hitbox can never drift apart ("ghost rects").
+"""
+
+from __future__ import annotations
+
+import pygame
+
+from game.aabb import Box
+from game.movement import Move
+
+
+class Body(pygame.sprite.Sprite):
+    """A sprite with a float hitbox, a velocity in px/s and its last two axis moves."""
+
+    image: pygame.Surface
+    rect: pygame.Rect
+
+    def __init__(self, box: Box) -> None:
+        super().__init__()
+        self.vx = 0.0  # px/s, right is positive
+        self.vy = 0.0  # px/s, down is positive
+        self.on_ground = False
+        self.last_x: Move | None = None  # recorded for the debug overlay
+        self.last_y: Move | None = None
+        self.image = pygame.Surface((max(1, int(box.w)), max(1, int(box.h))))
+        self.box = box
+        self.rect = box.to_rect()
+
+    def react(self, x_move: Move, y_move: Move) -> None:
+        """Respond to what this tick's two axis moves hit; subclasses decide how."""
+
+    def place(self, box: Box) -> None:
+        """Set the exact position; the Rect is derived here and nowhere else."""
+        self.box = box
+        self.rect = box.to_rect()

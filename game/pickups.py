@@ -1,0 +1,31 @@
+"""Things the player touches rather than collides with: coins and exits.
+
+Where it sits: step 5 of a tick. These are triggers, not solids: they never stop a body,
+and they are found with ``pygame.sprite.groupcollide`` / ``spritecollideany`` on their
+Rects, the cheapest exact test for a handful of boxes.
+"""
+
+from __future__ import annotations
+
+import pygame
+
+from game.aabb import Box
+
+
+class Coin(pygame.sprite.Sprite):
+    """A coin worth ``value`` points."""
+
+    def __init__(self, box: Box, value: int) -> None:
+        super().__init__()
+        self.box = box
+        self.rect = box.to_rect()
+        self.value = value
+
+
+class Exit(pygame.sprite.Sprite):
+    """Touching it completes the level."""
+
+    def __init__(self, box: Box) -> None:
+        super().__init__()
+        self.box = box
+        self.rect = box.to_rect()

@@ -1,0 +1,61 @@
+"""Every number that shapes how the game moves, with its unit in its name.
+
+Where it sits: read by the entities when they choose velocities. A level can override the
+four map properties of the contract (``gravity``, ``max_fall_speed``, ``run_speed``,
+``jump_speed``); :meth:`Tuning.with_map_properties` applies them exactly as given.
+
+What it teaches: speeds are in pixels per *second* and the tick length is explicit, so the
+game runs the same whatever the frame rate; derived values (pixels per tick) are computed,
+never typed in twice.
+
+>>> t = Tuning().with_map_properties({"gravity": 100.0, "title": "ignored"})
+>>> t.gravity_px_s2
+100.0
+>>> round(Tuning().run_speed_px_tick, 3)
+1.5
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, replace
+
+TICK_HZ = 60
+TICK_S = 1.0 / TICK_HZ  # one simulation tick of game time
+
+
+@dataclass(frozen=True)
+class Tuning:
+    """Movement tunables: the player's, the enemies' and the rules of the game."""
+
+    run_speed_px_s: float = 90.0
+    gravity_px_s2: float = 900.0
+    jump_speed_px_s: float = 290.0
+    max_fall_speed_px_s: float = 360.0
+    stomp_bounce_px_s: float = 200.0       # upward speed after stomping an enemy
+    enemy_speed_px_s: float = 30.0         # default patrol speed (an Enemy's ``speed``)
+    player_width_px: int = 12              # hitbox of a point-shaped Player spawn
+    player_height_px: int = 14
+    enemy_width_px: int = 14
+    enemy_height_px: int = 12
+    start_lives: int = 3
+    tick_s: float = TICK_S
+
+    @property
+    def run_speed_px_tick(self) -> float:
+        return self.run_speed_px_s * self.tick_s
+
+    def with_map_properties(self, properties: Mapping[str, object]) -> Tuning:
+        """This tuning with a level's physics properties (px/s or px/s²) applied as given."""
+        names = {
+            "gravity": "gravity_px_s2",
+            "max_fall_speed": "max_fall_speed_px_s",
+            "run_speed": "run_speed_px_s",
+            "jump_speed": "jump_speed_px_s",
+        }
+        changes: dict[str, float] = {}
+        for key, field_name in names.items():
+            value = properties.get(key)
+            if isinstance(value, (int, float)) and not isinstance(value, bool):
+                changes[field_name] = float(value)
+        return replace(self, **changes)

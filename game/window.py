@@ -1,0 +1,137 @@
+"""The windowed game: title, play, pause, game over and win screens around the campaign.
+
+Where it sits: above the simulation, beside the headless runner in :mod:`game.app`. It
+turns keys into menu choices and held actions, runs the fixed-step loop, and draws.
+
+Screens: the title (Enter starts), playing, paused (Esc or P; Resume, Restart level, Quit to
+title), game over and won (Enter returns to the title). A scripted run (``--inputs``) skips
+the title and ends at the end of the run, like a headless one.
+"""
+
+from __future__ import annotations
+
+from enum import Enum
+
+import pygame
+
+from game.app import EXIT_OK, TARGET_FPS, Run, held_keys
+from game.assets import Assets, load_assets
+from game.campaign import Campaign, Outcome
+from game.debug_overlay import draw_debug
+from game.hud import draw_hud
+from game.loop import FixedStep
+from game.render import draw_world
+from game.screens import (
+    PAUSE_ITEMS,
+    draw_game_over,
+    draw_pause,
+    draw_title,
+    draw_win,
+)
+
+CONFIRM_KEYS = (pygame.K_RETURN, pygame.K_KP_ENTER, pygame.K_SPACE)
+PAUSE_KEYS = (pygame.K_ESCAPE, pygame.K_p)
+
+
+class Screen(Enum):
+    TITLE = "title"
+    PLAYING = "playing"
+    PAUSED = "paused"
+    ENDED = "ended"
+
+
+def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = None,
+                 frame: int = 0, fps: float = 0.0, update_ms: float = 0.0) -> pygame.Surface:
+    """Draw the current state of play on the display surface and return it."""
+    target = pygame.display.get_surface()
+    assets = assets or load_assets()
+    draw_world(target, campaign.world, assets, frame or campaign.ticks)
+    draw_hud(target, campaign, assets)
+    if debug:
+        draw_debug(target, campaign.world, assets, fps, update_ms)
+    return target
+
+
+def play_in_window(run: Run) -> int:
+    """The interactive loop; returns when the window closes or a scripted run ends."""
+    assets = load_assets()
+    clock = pygame.time.Clock()
+    stepper = FixedStep()
+    scripted = run.script is not None
+    screen = Screen.PLAYING if scripted or run.args.level else Screen.TITLE
+    debug = bool(run.args.debug)
+    selected = 0
+    frame = 0
+    first_level = run.campaign.world.level.path
+    while True:
+        frame_s = clock.tick(TARGET_FPS) / 1000.0
+        frame += 1
+        # 1. Events: window, overlay, fullscreen, menus.
+        for event in pygame.event.get():
+            if event.type == pygame.QUIT:
+                run.write_outputs(pygame.display.get_surface())
+                return EXIT_OK
+            if event.type != pygame.KEYDOWN:
+                continue
+            if event.key == pygame.K_F1:
+                debug = not debug
+            elif event.key == pygame.K_F11:
+                pygame.display.toggle_fullscreen()
+            elif screen is Screen.TITLE and event.key in CONFIRM_KEYS:
+                run.campaign = Campaign(first_level, run.campaign.tuning, run.campaign.loader)
+                screen = Screen.PLAYING
+            elif screen is Screen.PLAYING and event.key in PAUSE_KEYS:
+                screen, selected = Screen.PAUSED, 0
+            elif screen is Screen.PAUSED:
+                if event.key in PAUSE_KEYS:
+                    screen = Screen.PLAYING
+                elif event.key in (pygame.K_UP, pygame.K_w):
+                    selected = (selected - 1) % len(PAUSE_ITEMS)
+                elif event.key in (pygame.K_DOWN, pygame.K_s):
+                    selected = (selected + 1) % len(PAUSE_ITEMS)
+                elif event.key in CONFIRM_KEYS:
+                    screen = _choose(run, selected)
+            elif screen is Screen.ENDED and event.key in CONFIRM_KEYS:
+                screen = Screen.TITLE
+
+        # 2. Ticks: as many fixed 1/60 s steps as real time has paid for.
+        if screen is Screen.PLAYING:
+            for _ in range(stepper.advance(frame_s)):
+                run.tick(held_keys())
+                if run.finished():
+                    break
+            if run.finished():
+                if scripted or run.args.ticks is not None:
+                    run.write_outputs(render_frame(run.campaign, debug=debug, assets=assets))
+                    return EXIT_OK
+                screen = Screen.ENDED
+        else:
+            stepper.advance(0.0)
+
+        # 3. Draw: the world, the HUD, the overlay, then whatever screen is up.
+        target = render_frame(run.campaign, debug=debug, assets=assets, frame=frame,
+                              fps=clock.get_fps(), update_ms=_last_update_ms(run))
+        if screen is Screen.TITLE:
+            draw_title(target, assets, frame)
+        elif screen is Screen.PAUSED:
+            draw_pause(target, assets, selected)
+        elif screen is Screen.ENDED:
+            if run.campaign.outcome is Outcome.WON:
+                draw_win(target, assets, run.campaign)
+            else:
+                draw_game_over(target, assets, run.campaign)
+        pygame.display.flip()
+
+
+def _choose(run: Run, selected: int) -> Screen:
+    item = PAUSE_ITEMS[selected]
+    if item == "Restart level":
+        run.campaign.restart_level()
+        return Screen.PLAYING
+    if item == "Quit to title":
+        return Screen.TITLE
+    return Screen.PLAYING
+
+
+def _last_update_ms(run: Run) -> float:
+    return run.timing.update_s[-1] * 1000.0 if run.timing.update_s else 0.0

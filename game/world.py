@@ -1,0 +1,180 @@
+"""One level in play, and the tick that advances it by 1/60 s.
+
+Where it sits: the middle of the game. :meth:`World.step` is the whole update, in order,
+in one function; the campaign (:mod:`game.campaign`) calls it once per tick and the
+renderer (:mod:`game.render`) only reads what it leaves behind.
+
+The order of a tick, pinned by ``tests/test_world.py``:
+
+1. **Intent**: the player reads the held actions, the enemies look ahead; each sets a velocity.
+2. **x pass**: every body moves along x, swept against the tile grid, stopping flush.
+3. **y pass**: every body moves along y the same way; the 1-pixel probe sets ``on_ground``.
+4. **React**: bodies read what their moves hit (land, bump, turn round).
+5. **Pickups**: coins by ``groupcollide`` with ``dokill``; the exit by ``spritecollideany``.
+6. **Enemies**: a touch from above is a stomp, any other touch hurts.
+7. **Hazards and the void**: spikes and falling below the map hurt; the player respawns.
+8. **Camera**: follows the player.
+
+Solids never go through ``groupcollide``: walls only meet bodies in the movement code.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from enum import Enum
+
+import pygame
+
+from game.aabb import Box
+from game.body import Body
+from game.camera import Camera
+from game.enemy import Enemy
+from game.inputs import Actions
+from game.level import Level
+from game.movement import ground_under, move_x, move_y, penetration_depth, touching
+from game.pickups import Coin, Exit
+from game.player import Player
+from game.tilegrid import TileKind
+from game.tuning import Tuning
+
+
+class EventKind(Enum):
+    COIN = "coin"
+    STOMP = "stomp"
+    HURT = "hurt"
+    EXIT = "exit"
+    JUMP = "jump"
+
+
+@dataclass(frozen=True)
+class Event:
+    """Something that happened in a tick, for the campaign, the sounds and the HUD."""
+
+    kind: EventKind
+    value: int = 0
+    where: Box | None = None
+
+
+@dataclass
+class TickStats:
+    """What the last tick cost, recorded for the debug overlay and the report."""
+
+    cells_visited: int = 0
+    shapes_tested: int = 0
+    collision_s: float = 0.0
+
+
+def overlapping(a: pygame.sprite.Sprite, b: pygame.sprite.Sprite) -> bool:
+    """Sprite-vs-sprite test on the exact float boxes (``collided=`` for pygame.sprite)."""
+    return bool(getattr(a, "box").overlaps(getattr(b, "box")))  # noqa: B009
+
+
+@dataclass
+class World:
+    """A level's live state: its bodies, its groups, its camera and its last tick's record."""
+
+    level: Level
+    tuning: Tuning = field(default_factory=Tuning)
+    camera: Camera = field(default_factory=Camera)
+
+    def __post_init__(self) -> None:
+        self.tuning = self.tuning.with_map_properties(self.level.properties)
+        self.grid = self.level.grid
+        self.player = Player(self.level.spawn)
+        self.players: pygame.sprite.GroupSingle[Player] = pygame.sprite.GroupSingle(self.player)
+        self.enemies: pygame.sprite.Group[Enemy] = pygame.sprite.Group(
+            Enemy(spec.box, spec.speed_px_s if spec.speed_px_s is not None
+                  else self.tuning.enemy_speed_px_s)
+            for spec in self.level.enemies)
+        self.coins: pygame.sprite.Group[Coin] = pygame.sprite.Group(
+            Coin(spec.box, spec.value) for spec in self.level.coins)
+        self.exits: pygame.sprite.Group[Exit] = pygame.sprite.Group(
+            Exit(box) for box in self.level.exits)
+        self.stats = TickStats()
+        self.max_penetration_px = 0.0
+        self.player.on_ground = ground_under(self.grid, self.player.box) is not None
+        self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
+
+    def bodies(self) -> list[Body]:
+        """Everything that moves, in the order it moves: the player, then enemies."""
+        return [self.player, *self.enemies]
+
+    def step(self, held: Actions) -> list[Event]:
+        """Advance the level by one tick of ``tuning.tick_s`` seconds."""
+        events: list[Event] = []
+        dt = self.tuning.tick_s
+        self.grid.stats.reset()
+        started = time.perf_counter()
+
+        # 1. Intent: entities choose velocities; none of them moves itself.
+        was_on_ground = self.player.on_ground
+        self.player.decide(held, self.tuning)
+        if was_on_ground and not self.player.on_ground:
+            events.append(Event(EventKind.JUMP))
+        for enemy in self.enemies:
+            enemy.decide(self.grid, self.tuning)
+        bodies = self.bodies()
+        before = {body: body.box for body in bodies}
+
+        # 2. x pass: move along x and stop flush at the first solid face swept.
+        for body in bodies:
+            body.last_x = move_x(self.grid, body.box, body.vx * dt)
+            body.place(body.last_x.box)
+
+        # 3. y pass: the same along y, then probe one pixel below the feet.
+        for body in bodies:
+            body.last_y = move_y(self.grid, body.box, body.vy * dt)
+            body.place(body.last_y.box)
+            body.on_ground = ground_under(self.grid, body.box) is not None
+
+        # 4. React: each body reads what its own moves hit.
+        for body in bodies:
+            assert body.last_x is not None and body.last_y is not None
+            body.react(body.last_x, body.last_y)
+
+        # 5. Pickups: coins vanish from their group as they are collected.
+        for coins in pygame.sprite.groupcollide(
+                self.players, self.coins, False, True, collided=overlapping).values():
+            events.extend(Event(EventKind.COIN, coin.value, coin.box) for coin in coins)
+        if pygame.sprite.spritecollideany(self.player, self.exits, collided=overlapping):
+            events.append(Event(EventKind.EXIT))
+
+        # 6. Enemies: landing on top is a stomp; any other touch hurts.
+        hurt = False
+        for enemy in pygame.sprite.spritecollide(self.player, self.enemies, False,
+                                                 collided=overlapping):
+            if self._came_from_above(before[self.player], before[enemy]):
+                enemy.kill()
+                self.player.bounce(self.tuning.stomp_bounce_px_s)
+                events.append(Event(EventKind.STOMP, 1, enemy.box))
+            else:
+                hurt = True
+
+        # 7. Hazards and the void: spikes and falling below the map cost a life.
+        if touching(self.grid, self.player.box, TileKind.HAZARD):
+            hurt = True
+        if self.player.box.top >= self.grid.height_px:
+            hurt = True
+        for enemy in self.enemies:
+            if enemy.box.top >= self.grid.height_px:
+                enemy.kill()
+        if hurt and not any(e.kind is EventKind.EXIT for e in events):
+            events.append(Event(EventKind.HURT, 1, self.player.box))
+            self.player.respawn(self.level.spawn)
+
+        self.stats = TickStats(self.grid.stats.cells_visited, self.grid.stats.shapes_tested,
+                               time.perf_counter() - started)
+        # Measurement only: how deep does any body sit in a solid after resolution?
+        for body in self.bodies():
+            self.max_penetration_px = max(self.max_penetration_px,
+                                          penetration_depth(self.grid, body.box))
+
+        # 8. Camera: follow the player, inside the map.
+        self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
+        return events
+
+    @staticmethod
+    def _came_from_above(player_before: Box, enemy_before: Box) -> bool:
+        """A stomp: the player's feet were at or above the enemy's head before this tick."""
+        return player_before.bottom <= enemy_before.top
