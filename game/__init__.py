@@ -6,4 +6,5 @@ Start reading at :mod:`game.world` (one tick, top to bottom) and :mod:`game.move
 
 import os
 
-os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")  # keep the console for the game's own words
+# Keep the console for the game's own words.
+os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")

@@ -73,7 +73,7 @@ class Box(NamedTuple):
         """This box shifted by ``(dx, dy)``.
 
         >>> Box(1, 2, 3, 4).moved(dx=10)
-        Box(x=11, y=2, w=3, h=4)
+        Box(x=11, y=2.0, w=3, h=4)
         """
         return Box(self.x + dx, self.y + dy, self.w, self.h)
 

@@ -17,11 +17,9 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
 import time
 from dataclasses import dataclass, field
-from enum import Enum
 from pathlib import Path
 
 import pygame
@@ -31,7 +29,6 @@ from game.files import write_atomically, write_text_atomically
 from game.inputs import NOTHING, Action, Actions, InputScript, InputScriptError, Recorder
 from game.level import Level
 from game.levels import FIRST_LEVEL, LevelError, load_level
-from game.loop import FixedStep
 from game.report import Timing, build_report
 
 HEADLESS_TICK_LIMIT = 60 * 60 * 60  # an hour of game time: a run with no --ticks still ends
@@ -123,7 +120,7 @@ def run(args: argparse.Namespace) -> int:
         pygame.display.init()
         pygame.font.init()
         flags = 0 if args.headless else pygame.SCALED | pygame.RESIZABLE
-        from game.camera import VIEW_H_PX, VIEW_W_PX  # noqa: PLC0415
+        from game.camera import VIEW_H_PX, VIEW_W_PX
         pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX), flags)
         pygame.display.set_caption("Tile Hopper")
 
@@ -135,7 +132,7 @@ def run(args: argparse.Namespace) -> int:
         game_run = Run(campaign, script, args)
         if args.headless:
             return run_headless(game_run)
-        from game.window import play_in_window  # noqa: PLC0415
+        from game.window import play_in_window
 
         return play_in_window(game_run)
     except LevelError as error:
@@ -151,7 +148,7 @@ def run_headless(game_run: Run) -> int:
         game_run.tick()
     frame = None
     if game_run.args.screenshot:
-        from game.window import render_frame  # noqa: PLC0415
+        from game.window import render_frame
 
         frame = render_frame(game_run.campaign, debug=game_run.args.debug)
     game_run.write_outputs(frame)

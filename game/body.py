@@ -33,8 +33,24 @@ class Body(pygame.sprite.Sprite):
         self.box = box
         self.rect = box.to_rect()
 
+    def teleport(self, box: Box) -> None:
+        """Place the body somewhere new with no path behind it (a respawn, a level start)."""
+        self.place(box)
+        self.last_x = self.last_y = None
+
     def react(self, x_move: Move, y_move: Move) -> None:
         """Respond to what this tick's two axis moves hit; subclasses decide how."""
+
+    def travelled_through(self, region: Box) -> bool:
+        """Did this tick's path (the x step, then the y step) overlap ``region``?
+
+        Testing the path, not just the final box, means a fast body cannot skip over a coin
+        or a spike in one tick: the trigger version of "sweep every move".
+        """
+        moves = [m for m in (self.last_x, self.last_y) if m is not None]
+        if not moves:
+            return self.box.overlaps(region)
+        return any(m.path.overlaps(region) for m in moves)
 
     def place(self, box: Box) -> None:
         """Set the exact position; the Rect is derived here and nowhere else."""

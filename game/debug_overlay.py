@@ -12,7 +12,7 @@ What it teaches (read the colours):
     Solid grey, OneWay orange, Hazard magenta. Only these are ever tested; the rest of the
     map costs nothing.
   * **Swept moves.** Each body moved along x (the blue sweep) and then along y (the purple
-    sweep); a white bar marks the face a sweep stopped at. Standing still, you still see a
+    sweep); a red bar marks the face a sweep stopped at. Standing still, you still see a
     thin purple sweep hitting the floor every tick: gravity pulls, the floor stops it.
   * **The cost.** "checks: N shapes in M cells" is what the whole tick's lookups did.
 """
@@ -26,7 +26,7 @@ import pygame
 from game.aabb import Box
 from game.assets import Assets
 from game.camera import Camera
-from game.hud import HUD_BAR_H_PX, Color, draw_text
+from game.hud import HUD_BAR_H_PX, SMALL_TEXT_ANTIALIAS, Color, draw_text
 from game.movement import Move, Side
 from game.tilegrid import TileGrid, TileKind
 from game.world import World
@@ -36,22 +36,25 @@ ENEMY_COLOR: Color = (255, 64, 64)
 COIN_COLOR: Color = (255, 232, 64)
 EXIT_COLOR: Color = (64, 240, 255)
 SHAPE_COLORS: dict[TileKind, Color] = {
-    TileKind.SOLID: (170, 170, 186),
+    TileKind.SOLID: (225, 225, 235),
     TileKind.ONE_WAY: (255, 150, 40),
     TileKind.HAZARD: (255, 64, 255),
 }
+SHAPE_RIM_COLOR: Color = (24, 20, 40)  # just inside each outline, so it shows on light tiles
+SHAPE_RIM_INSET_PX = 1
 SHAPE_FILL_ALPHA = 40  # 0..255: a faint wash inside each checked tile shape
 SWEEP_X_COLOR: Color = (60, 120, 255, 90)
 SWEEP_Y_COLOR: Color = (180, 70, 255, 90)
-HIT_COLOR: Color = (255, 255, 255)
+HIT_COLOR: Color = (255, 40, 40)
+HIT_EDGE_COLOR: Color = (0, 0, 0)  # a dark rim so the bar shows on light tiles too
 HIT_MARK_PX = 2  # the hit-face bar is this thick, straddling the face
+HIT_EDGE_PX = 1
 
 NEAR_CELLS = 1  # shapes this many cells around a body are shown as "checked"
 
 PANEL_COLOR: Color = (0, 0, 0, 160)
 PANEL_TEXT: Color = (230, 236, 255)
 PANEL_PAD_PX = 3
-PANEL_ANTIALIAS = False  # small text is crisper unsmoothed at 320x180
 PANEL_GAP_PX = 2  # between the HUD bar and the panel
 MS_PER_S = 1000.0
 
@@ -145,7 +148,7 @@ def _draw_panel(target: pygame.Surface, world: World, assets: Assets, fps: float
     y = panel.top + PANEL_PAD_PX
     for line in lines:
         draw_text(target, font, line, (panel.left + PANEL_PAD_PX, y), PANEL_TEXT, outline=None,
-                  antialias=PANEL_ANTIALIAS)
+                  antialias=SMALL_TEXT_ANTIALIAS)
         y += line_h
 
 
@@ -167,7 +170,11 @@ def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float,
                 bars.append(bar)
     target.blit(wash, (0, 0))
     for color, rect in outlines:
+        rim = rect.inflate(-2 * SHAPE_RIM_INSET_PX, -2 * SHAPE_RIM_INSET_PX)
+        pygame.draw.rect(target, SHAPE_RIM_COLOR, rim, width=1)
         pygame.draw.rect(target, color, rect, width=1)
+    for bar in bars:
+        target.fill(HIT_EDGE_COLOR, bar.inflate(2 * HIT_EDGE_PX, 2 * HIT_EDGE_PX))
     for bar in bars:
         target.fill(HIT_COLOR, bar)
     _draw_outlines(target, world)

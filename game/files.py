@@ -36,4 +36,7 @@ def write_text_atomically(path: Path, text: str) -> None:
     >>> target.read_text()
     'hello'
     """
-    write_atomically(path, lambda tmp: tmp.write_text(text, encoding="utf-8"))
+    def write(tmp: Path) -> None:
+        tmp.write_text(text, encoding="utf-8")
+
+    write_atomically(path, write)

@@ -29,6 +29,7 @@ Anchor = Literal["topleft", "midtop", "topright", "midleft", "center", "midright
 
 TEXT_COLOR: Color = (255, 255, 255)
 OUTLINE_COLOR: Color = (20, 16, 32)
+OUTLINE_PX = 1  # free-standing text is ringed by this many pixels of OUTLINE_COLOR
 GOLD: Color = (255, 214, 90)
 DIM_TEXT: Color = (190, 196, 220)
 
@@ -41,6 +42,7 @@ MAX_HEARTS_SHOWN = 6  # more lives than this are shown as one heart and a count
 LOST_HEART_ALPHA = 70  # 0..255: a life already lost is drawn faint
 SCORE_DIGITS = 5
 ELLIPSIS = "..."
+SMALL_TEXT_ANTIALIAS = False  # ``Assets.small_font`` is crisper unsmoothed at 320x180
 
 
 def draw_text(target: pygame.Surface, font: pygame.font.Font, text: str,
@@ -54,8 +56,10 @@ def draw_text(target: pygame.Surface, font: pygame.font.Font, text: str,
     setattr(rect, anchor, pos)
     if outline is not None:
         edge = font.render(text, antialias, outline)
-        for dx, dy in ((-1, 0), (1, 0), (0, -1), (0, 1), (-1, -1), (1, -1), (-1, 1), (1, 1)):
-            target.blit(edge, rect.move(dx, dy))
+        for dx in (-OUTLINE_PX, 0, OUTLINE_PX):
+            for dy in (-OUTLINE_PX, 0, OUTLINE_PX):
+                if dx or dy:
+                    target.blit(edge, rect.move(dx, dy))
     target.blit(face, rect)
     return rect
 
@@ -119,5 +123,8 @@ def draw_hud(target: pygame.Surface, campaign: Campaign, assets: Assets) -> None
     room = score.left - coins.right - 2 * HUD_GAP_PX
     title = fit_text(assets.font, campaign.world.level.title, room)
     if title:
-        centre_x = (coins.right + score.left) // 2
+        half = assets.font.size(title)[0] // 2 + HUD_GAP_PX
+        centre_x = width // 2  # centred on the screen if it fits there, else in the gap
+        if not coins.right + half <= centre_x <= score.left - half:
+            centre_x = (coins.right + score.left) // 2
         draw_text(target, assets.font, title, (centre_x, mid_y), DIM_TEXT, anchor="center")

@@ -15,10 +15,10 @@ An action is held from its ``+`` tick until its ``-`` tick. Ticks never decrease
 >>> script = InputScript.parse("0 +right\\n3 +jump\\n4 -jump\\n", "demo.txt")
 >>> [sorted(a.value for a in script.held_at(t)) for t in range(5)]
 [['right'], ['right'], ['right'], ['jump', 'right'], ['right']]
->>> InputScript.parse("5 +fly", "bad.txt")
+>>> InputScript.parse("5 +fly", "bad.txt")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
     ...
-game.inputs.InputScriptError: bad.txt: line 1: unknown action 'fly' — use one of left, right, up, down, jump
+game.inputs.InputScriptError: bad.txt: line 1: unknown action 'fly' — use one of left, ...
 """
 
 from __future__ import annotations

@@ -62,11 +62,20 @@ class Hit:
 
 @dataclass(frozen=True)
 class Move:
-    """The result of one axis step: where the body ended, what it hit, what was swept."""
+    """The result of one axis step: where the body ended, what it hit, what was swept.
+
+    ``swept`` is the region checked (old box to intended box); :attr:`path` is the region
+    actually travelled (old box to final box), which is what triggers such as coins test.
+    """
 
     box: Box
     hit: Hit | None
     swept: Box
+    start: Box
+
+    @property
+    def path(self) -> Box:
+        return self.start.union(self.box)
 
 
 def _check_step(delta: float) -> None:
@@ -78,7 +87,7 @@ def move_x(grid: TileGrid, box: Box, dx: float) -> Move:
     """Move ``box`` by ``dx`` along x, stopping flush at the nearest solid face or map edge."""
     _check_step(dx)
     if dx == 0:
-        return Move(box, None, box)
+        return Move(box, None, box, box)
     swept = box.union(box.moved(dx=dx))
     hit: Hit | None = None
     if dx > 0:
@@ -89,7 +98,7 @@ def move_x(grid: TileGrid, box: Box, dx: float) -> Move:
                 stop, hit = face, Hit(Side.RIGHT, face, shape)
         if box.right <= grid.width_px < stop:
             stop, hit = grid.width_px, Hit(Side.RIGHT, grid.width_px, None)
-        return Move(box._replace(x=stop - box.w), hit, swept)
+        return Move(box._replace(x=stop - box.w), hit, swept, box)
     stop = box.left + dx
     for shape in grid.shapes_in(swept):
         face = shape.box.right
@@ -97,7 +106,7 @@ def move_x(grid: TileGrid, box: Box, dx: float) -> Move:
             stop, hit = face, Hit(Side.LEFT, face, shape)
     if stop < 0 <= box.left:
         stop, hit = 0, Hit(Side.LEFT, 0, None)
-    return Move(box._replace(x=stop), hit, swept)
+    return Move(box._replace(x=stop), hit, swept, box)
 
 
 def move_y(grid: TileGrid, box: Box, dy: float, *, through_one_way: bool = False) -> Move:
@@ -109,7 +118,7 @@ def move_y(grid: TileGrid, box: Box, dy: float, *, through_one_way: bool = False
     """
     _check_step(dy)
     if dy == 0:
-        return Move(box, None, box)
+        return Move(box, None, box, box)
     swept = box.union(box.moved(dy=dy))
     hit: Hit | None = None
     if dy > 0:
@@ -120,13 +129,13 @@ def move_y(grid: TileGrid, box: Box, dy: float, *, through_one_way: bool = False
                 shape.kind is TileKind.ONE_WAY and not through_one_way)
             if blocks and box.bottom <= face < stop:
                 stop, hit = face, Hit(Side.BOTTOM, face, shape)
-        return Move(box._replace(y=stop - box.h), hit, swept)
+        return Move(box._replace(y=stop - box.h), hit, swept, box)
     stop = box.top + dy
     for shape in grid.shapes_in(swept):
         face = shape.box.bottom
         if shape.kind is TileKind.SOLID and stop < face <= box.top:
             stop, hit = face, Hit(Side.TOP, face, shape)
-    return Move(box._replace(y=stop), hit, swept)
+    return Move(box._replace(y=stop), hit, swept, box)
 
 
 def ground_under(grid: TileGrid, box: Box) -> TileShape | None:

@@ -15,17 +15,25 @@ from game.aabb import Box
 class Coin(pygame.sprite.Sprite):
     """A coin worth ``value`` points."""
 
+    image: pygame.Surface  # a plain box; game.render draws the shared animated art
+    rect: pygame.Rect
+
     def __init__(self, box: Box, value: int) -> None:
         super().__init__()
         self.box = box
         self.rect = box.to_rect()
+        self.image = pygame.Surface(self.rect.size)
         self.value = value
 
 
 class Exit(pygame.sprite.Sprite):
     """Touching it completes the level."""
 
+    image: pygame.Surface
+    rect: pygame.Rect
+
     def __init__(self, box: Box) -> None:
         super().__init__()
         self.box = box
         self.rect = box.to_rect()
+        self.image = pygame.Surface(self.rect.size)

@@ -52,6 +52,6 @@ class Player(Body):
         self.on_ground = False
 
     def respawn(self, box: Box) -> None:
-        self.place(box)
+        self.teleport(box)
         self.vx = self.vy = 0.0
         self.on_ground = False

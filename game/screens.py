@@ -21,14 +21,22 @@ import pygame
 
 from game.assets import Assets
 from game.campaign import Campaign
-from game.hud import DIM_TEXT, GOLD, TEXT_COLOR, Color, draw_text, translucent_rect
+from game.hud import (
+    DIM_TEXT,
+    GOLD,
+    SMALL_TEXT_ANTIALIAS,
+    TEXT_COLOR,
+    Color,
+    draw_text,
+    translucent_rect,
+)
 from game.render import ANIMATION_HZ, animation_index
 
 GAME_TITLE = "Tile Hopper"
 PAUSE_ITEMS = ("Resume", "Restart level", "Quit to title")
 
 DIM_MULTIPLIER = (96, 96, 120)  # the frame behind a menu is multiplied by this / 255
-PANEL_COLOR: Color = (12, 10, 28, 190)
+PANEL_COLOR: Color = (12, 10, 28, 215)
 PANEL_BORDER: Color = (255, 214, 90)
 HIGHLIGHT_COLOR: Color = (255, 214, 90, 70)
 HIGHLIGHT_TEXT: Color = (255, 240, 170)
@@ -39,9 +47,10 @@ LINE_GAP_PX = 2  # extra space between lines of text
 PANEL_PAD_PX = 6  # space between a panel's border and its contents
 MENU_ROW_PAD_PX = 1  # highlight bar reaches this far above and below its text
 MENU_MARKER = ">"
-MENU_MARKER_GAP_PX = 4
+MENU_MARKER_GAP_PX = 6
+COLUMN_GAP_PX = 12  # between a label and its value
 
-TITLE_Y_PX = 34  # centre of the game title on the title screen
+TITLE_Y_PX = 28  # centre of the game title on the title screen
 TITLE_BOB_PX = 2  # the title floats up and down by this much
 TITLE_BOB_HZ = 0.5
 TITLE_SKY_SCROLL_PX_S = 12  # how fast the sky drifts behind the title
@@ -53,9 +62,9 @@ CHASER_FPS = 4
 CHASER_FRAMES = (0, 1)
 CHASER_GAP_PX = 40  # the slime follows the hero at this distance
 GROUND_FROM_BOTTOM_PX = 14  # the runners' feet sit this far above the bottom edge
-COIN_ROW_GAP_PX = 12
+COIN_ROW_GAP_PX = 12  # between coin centres in the row under the title
 COIN_ROW_COUNT = 5
-COIN_ROW_Y_PX = 58
+COIN_ROW_MARGIN_PX = 8  # above and below the row of coins
 COIN_FPS = 8
 
 CONTROLS = (
@@ -95,24 +104,27 @@ def draw_title(target: pygame.Surface, assets: Assets, frame: int) -> None:
         x += sky.get_width()
 
     bob = round(TITLE_BOB_PX * math.sin(2 * math.pi * TITLE_BOB_HZ * seconds))
-    title = draw_text(target, assets.big_font, GAME_TITLE, (width // 2, TITLE_Y_PX + bob),
-                      GOLD, anchor="center")
-    draw_text(target, assets.small_font, "a platformer about collisions",
-              (width // 2, title.bottom + LINE_GAP_PX), DIM_TEXT, anchor="midtop")
+    centre_x = width // 2
+    draw_text(target, assets.big_font, GAME_TITLE, (centre_x, TITLE_Y_PX + bob), GOLD,
+              anchor="center")
+    subtitle_top = TITLE_Y_PX + assets.big_font.get_height() // 2 + LINE_GAP_PX
+    subtitle = draw_text(target, assets.small_font, "a platformer about collisions",
+                         (centre_x, subtitle_top), DIM_TEXT, anchor="midtop",
+                         antialias=SMALL_TEXT_ANTIALIAS)
 
     coin_frames = assets.coin_frames
+    coin_y = subtitle.bottom + COIN_ROW_MARGIN_PX
     row_w = (COIN_ROW_COUNT - 1) * COIN_ROW_GAP_PX
     for number in range(COIN_ROW_COUNT):
-        index = animation_index(frame, COIN_FPS, range(len(coin_frames)), number)
-        coin = coin_frames[index]
-        target.blit(coin, coin.get_rect(center=(width // 2 - row_w // 2
-                                                + number * COIN_ROW_GAP_PX, COIN_ROW_Y_PX)))
+        coin = coin_frames[animation_index(frame, COIN_FPS, range(len(coin_frames)), number)]
+        coin_x = centre_x - row_w // 2 + number * COIN_ROW_GAP_PX
+        target.blit(coin, coin.get_rect(center=(coin_x, coin_y)))
 
+    prompt_top = coin_y + COIN_ROW_MARGIN_PX
     if _blinking_on(frame):
-        draw_text(target, assets.font, "Press Enter to start",
-                  (width // 2, COIN_ROW_Y_PX + COIN_ROW_GAP_PX), anchor="midtop")
-
-    _draw_controls(target, assets, COIN_ROW_Y_PX + 2 * COIN_ROW_GAP_PX + LINE_GAP_PX)
+        draw_text(target, assets.font, "Press Enter to start", (centre_x, prompt_top),
+                  anchor="midtop")
+    _draw_controls(target, assets, prompt_top + assets.font.get_linesize() + LINE_GAP_PX)
     _draw_runners(target, assets, frame)
 
 
@@ -121,15 +133,16 @@ def _draw_controls(target: pygame.Surface, assets: Assets, top: int) -> None:
     line_h = font.get_linesize()
     label_w = max(font.size(label)[0] for label, _ in CONTROLS)
     keys_w = max(font.size(keys)[0] for _, keys in CONTROLS)
-    panel = pygame.Rect(0, top, label_w + keys_w + 3 * PANEL_PAD_PX,
+    panel = pygame.Rect(0, top, label_w + keys_w + COLUMN_GAP_PX + 2 * PANEL_PAD_PX,
                         len(CONTROLS) * line_h + 2 * PANEL_PAD_PX - LINE_GAP_PX)
     panel.centerx = target.get_width() // 2
     translucent_rect(target, panel, PANEL_COLOR)
     y = panel.top + PANEL_PAD_PX
     for label, keys in CONTROLS:
-        draw_text(target, font, label, (panel.left + PANEL_PAD_PX, y), DIM_TEXT, outline=None)
+        draw_text(target, font, label, (panel.left + PANEL_PAD_PX, y), DIM_TEXT, outline=None,
+                  antialias=SMALL_TEXT_ANTIALIAS)
         draw_text(target, font, keys, (panel.right - PANEL_PAD_PX, y), anchor="topright",
-                  outline=None)
+                  outline=None, antialias=SMALL_TEXT_ANTIALIAS)
         y += line_h
 
 
@@ -161,16 +174,17 @@ def draw_pause(target: pygame.Surface, assets: Assets, selected: int) -> None:
     draw_text(target, assets.big_font, "Paused", (panel.centerx, panel.top + PANEL_PAD_PX),
               anchor="midtop")
     y = panel.top + PANEL_PAD_PX + heading_h
+    text_left = panel.left + PANEL_PAD_PX + marker_w
     for number, item in enumerate(PAUSE_ITEMS):
-        row = pygame.Rect(panel.left + PANEL_PAD_PX, y - MENU_ROW_PAD_PX,
-                          panel.w - 2 * PANEL_PAD_PX, font.get_height() + 2 * MENU_ROW_PAD_PX)
         if number == selected:
+            row = pygame.Rect(panel.left + PANEL_PAD_PX, y - MENU_ROW_PAD_PX,
+                              panel.w - 2 * PANEL_PAD_PX,
+                              font.get_height() + 2 * MENU_ROW_PAD_PX)
             translucent_rect(target, row, HIGHLIGHT_COLOR)
-            draw_text(target, font, MENU_MARKER, (row.left + MENU_MARKER_GAP_PX // 2, y),
-                      GOLD)
-            draw_text(target, font, item, (panel.centerx, y), HIGHLIGHT_TEXT, anchor="midtop")
+            draw_text(target, font, MENU_MARKER, (row.left + MENU_MARKER_GAP_PX // 2, y), GOLD)
+            draw_text(target, font, item, (text_left, y), HIGHLIGHT_TEXT)
         else:
-            draw_text(target, font, item, (panel.centerx, y), DIM_TEXT, anchor="midtop")
+            draw_text(target, font, item, (text_left, y), DIM_TEXT)
         y += line_h
 
 
@@ -189,7 +203,8 @@ def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign, hea
     line_h = font.get_linesize()
     heading_h = assets.big_font.get_linesize()
     text_w = max(font.size(label)[0] + font.size(value)[0] for label, value in lines)
-    panel = pygame.Rect(0, 0, text_w + 4 * PANEL_PAD_PX,
+    panel_w = max(text_w + COLUMN_GAP_PX, assets.big_font.size(heading)[0]) + 4 * PANEL_PAD_PX
+    panel = pygame.Rect(0, 0, panel_w,
                         heading_h + len(lines) * line_h + line_h + 3 * PANEL_PAD_PX)
     panel.center = (width // 2, height // 2)
     _panel(target, panel)

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
+from typing import Any
 
 TICK_HZ = 60
 TICK_S = 1.0 / TICK_HZ  # one simulation tick of game time
@@ -53,7 +54,7 @@ class Tuning:
             "run_speed": "run_speed_px_s",
             "jump_speed": "jump_speed_px_s",
         }
-        changes: dict[str, float] = {}
+        changes: dict[str, Any] = {}
         for key, field_name in names.items():
             value = properties.get(key)
             if isinstance(value, (int, float)) and not isinstance(value, bool):

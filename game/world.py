@@ -65,9 +65,9 @@ class TickStats:
     collision_s: float = 0.0
 
 
-def overlapping(a: pygame.sprite.Sprite, b: pygame.sprite.Sprite) -> bool:
-    """Sprite-vs-sprite test on the exact float boxes (``collided=`` for pygame.sprite)."""
-    return bool(getattr(a, "box").overlaps(getattr(b, "box")))  # noqa: B009
+def crossed(body: Body, thing: Coin | Exit | Enemy) -> bool:
+    """``collided=`` for pygame.sprite: did the body's path this tick overlap the thing?"""
+    return body.travelled_through(thing.box)
 
 
 @dataclass
@@ -135,15 +135,15 @@ class World:
 
         # 5. Pickups: coins vanish from their group as they are collected.
         for coins in pygame.sprite.groupcollide(
-                self.players, self.coins, False, True, collided=overlapping).values():
+                self.players, self.coins, False, True, collided=crossed).values():
             events.extend(Event(EventKind.COIN, coin.value, coin.box) for coin in coins)
-        if pygame.sprite.spritecollideany(self.player, self.exits, collided=overlapping):
+        if pygame.sprite.spritecollideany(self.player, self.exits, collided=crossed):
             events.append(Event(EventKind.EXIT))
 
         # 6. Enemies: landing on top is a stomp; any other touch hurts.
         hurt = False
         for enemy in pygame.sprite.spritecollide(self.player, self.enemies, False,
-                                                 collided=overlapping):
+                                                 collided=crossed):
             if self._came_from_above(before[self.player], before[enemy]):
                 enemy.kill()
                 self.player.bounce(self.tuning.stomp_bounce_px_s)
@@ -152,7 +152,8 @@ class World:
                 hurt = True
 
         # 7. Hazards and the void: spikes and falling below the map cost a life.
-        if touching(self.grid, self.player.box, TileKind.HAZARD):
+        moves = (self.player.last_x, self.player.last_y)
+        if any(m and touching(self.grid, m.path, TileKind.HAZARD) for m in moves):
             hurt = True
         if self.player.box.top >= self.grid.height_px:
             hurt = True

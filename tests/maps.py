@@ -1,0 +1,99 @@
+"""Build levels for tests from ASCII art, in memory or as real Tiled files.
+
+Legend: ``#`` solid tile, ``-`` one-way tile, ``^`` hazard tile, ``P`` player spawn (top-left
+of a 12x14 hitbox at the cell's corner), ``C`` coin (8x8 at the cell's corner), ``E`` enemy
+(14x12 at the cell's corner), ``D`` exit (the whole cell). Every other character is empty.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from game.aabb import Box
+from game.level import CoinSpec, EnemySpec, Level
+from game.tilegrid import TileGrid, TileKind, TileShape
+
+TILE = 16
+KINDS = {"#": TileKind.SOLID, "-": TileKind.ONE_WAY, "^": TileKind.HAZARD}
+
+
+def level_from_ascii(rows: list[str], properties: dict[str, object] | None = None,
+                     spawn: Box | None = None) -> Level:
+    width = max(len(r) for r in rows)
+    grid = TileGrid(width, len(rows), TILE, TILE)
+    coins: list[CoinSpec] = []
+    enemies: list[EnemySpec] = []
+    exits: list[Box] = []
+    found_spawn = spawn
+    for row, line in enumerate(rows):
+        for col, char in enumerate(line):
+            x, y = col * TILE, row * TILE
+            if char in KINDS:
+                grid.put(col, row, TileShape(Box(x, y, TILE, TILE), KINDS[char], col, row))
+            elif char == "P" and found_spawn is None:
+                found_spawn = Box(x, y, 12, 14)
+            elif char == "C":
+                coins.append(CoinSpec(Box(x, y, 8, 8), 1))
+            elif char == "E":
+                enemies.append(EnemySpec(Box(x, y, 14, 12)))
+            elif char == "D":
+                exits.append(Box(x, y, TILE, TILE))
+    assert found_spawn is not None, "a test level needs a P"
+    return Level(path=Path("test.tmx"), grid=grid, spawn=found_spawn, coins=tuple(coins),
+                 enemies=tuple(enemies), exits=tuple(exits), properties=properties or {})
+
+
+TSX = """<?xml version="1.0" encoding="UTF-8"?>
+<tileset version="1.8" tiledversion="1.8.2" name="t" tilewidth="16" tileheight="16"
+ tilecount="4" columns="4">
+ <tile id="0" {attr}="Solid"/>
+ <tile id="1" {attr}="OneWay"/>
+ <tile id="2" {attr}="Hazard"/>
+</tileset>
+"""
+
+GIDS = {"#": 1, "-": 2, "^": 3}
+
+
+def write_tmx(folder: Path, rows: list[str], name: str = "level.tmx",
+              properties: dict[str, tuple[str, object]] | None = None,
+              class_attr: str = "type", extra_objects: str = "") -> Path:
+    """Write a Tiled map (CSV data, external tileset) drawn from ASCII; return its path."""
+    width = max(len(r) for r in rows)
+    rows = [r.ljust(width) for r in rows]
+    (folder / "t.tsx").write_text(TSX.format(attr=class_attr), encoding="utf-8")
+    data = ",\n".join(",".join(str(GIDS.get(c, 0)) for c in r) for r in rows)
+    objects: list[str] = []
+    next_id = 1
+    for row, line in enumerate(rows):
+        for col, char in enumerate(line):
+            x, y = col * TILE, row * TILE
+            shape = {"P": ("Player", 12, 14), "C": ("Coin", 8, 8), "E": ("Enemy", 14, 12),
+                     "D": ("Exit", TILE, TILE)}.get(char)
+            if shape:
+                objects.append(f'  <object id="{next_id}" {class_attr}="{shape[0]}" x="{x}" '
+                               f'y="{y}" width="{shape[1]}" height="{shape[2]}"/>')
+                next_id += 1
+    props = "".join(f'  <property name="{k}" type="{t}" value="{v}"/>\n'
+                    for k, (t, v) in (properties or {}).items())
+    text = f"""<?xml version="1.0" encoding="UTF-8"?>
+<map version="1.8" tiledversion="1.8.2" orientation="orthogonal" renderorder="right-down"
+ width="{width}" height="{len(rows)}" tilewidth="16" tileheight="16" infinite="0"
+ nextlayerid="3" nextobjectid="{next_id}">
+ <properties>
+{props} </properties>
+ <tileset firstgid="1" source="t.tsx"/>
+ <layer id="1" name="ground" width="{width}" height="{len(rows)}">
+  <data encoding="csv">
+{data}
+</data>
+ </layer>
+ <objectgroup id="2" name="objects">
+{chr(10).join(objects)}
+{extra_objects}
+ </objectgroup>
+</map>
+"""
+    path = folder / name
+    path.write_text(text, encoding="utf-8")
+    return path

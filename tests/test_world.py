@@ -1,0 +1,256 @@
+"""Whole ticks of a level: standing, running, stomping, coins, hazards, the void, the exit."""
+
+from __future__ import annotations
+
+import itertools
+import math
+from pathlib import Path
+
+import pytest
+
+from game.aabb import Box
+from game.campaign import Campaign, Outcome
+from game.inputs import NOTHING, Action
+from game.level import Level
+from game.loop import FixedStep
+from game.tuning import Tuning
+from game.world import EventKind, World
+from tests.maps import level_from_ascii
+
+RIGHT = frozenset({Action.RIGHT})
+LEFT = frozenset({Action.LEFT})
+JUMP = frozenset({Action.JUMP})
+
+FLAT = [
+    "                    ",
+    "                    ",
+    "  P                 ",
+    "####################",
+]
+
+
+def test_standing_for_600_ticks_never_moves_a_pixel_or_leaves_the_ground() -> None:
+    world = World(level_from_ascii(FLAT))
+    for _ in range(5):
+        world.step(NOTHING)  # fall the few pixels onto the floor
+    resting = world.player.box
+    for _ in range(600):
+        world.step(NOTHING)
+        assert world.player.box == resting
+        assert world.player.rect.topleft == (resting.x, resting.y)
+        assert world.player.on_ground
+    assert world.max_penetration_px == 0.0
+
+
+def test_running_across_the_floor_seams_never_stops() -> None:
+    world = World(level_from_ascii(FLAT), Tuning(run_speed_px_s=60.0))
+    for _ in range(10):
+        world.step(NOTHING)
+    xs = []
+    for _ in range(200):
+        world.step(RIGHT)
+        xs.append(world.player.box.x)
+        if world.player.box.right >= world.grid.width_px:
+            break
+        assert world.player.vx == 60.0 and world.player.on_ground
+    assert all(b > a for a, b in itertools.pairwise(xs))
+
+
+@pytest.mark.parametrize("action", [RIGHT, LEFT])
+def test_a_tenth_of_a_pixel_per_tick_moves_the_player(action: frozenset[Action]) -> None:
+    world = World(level_from_ascii(["          ", "    P     ", "##########"]),
+                  Tuning(run_speed_px_s=6.0))          # 0.1 px per tick
+    for _ in range(5):
+        world.step(NOTHING)
+    start = world.player.box.x
+    for _ in range(600):
+        world.step(action)
+    sign = 1 if action == RIGHT else -1
+    assert world.player.box.x == pytest.approx(start + sign * 60.0)
+    assert world.player.rect.x == math.floor(world.player.box.x)
+
+
+def test_landing_on_an_enemy_from_above_stomps_it_and_bounces() -> None:
+    level = level_from_ascii([
+        "   P    ",
+        "        ",
+        "        ",
+        "   E    ",
+        "########",
+    ])
+    world = World(level, Tuning(enemy_speed_px_s=0.0))
+    events = []
+    for _ in range(60):
+        events += world.step(NOTHING)
+        if any(e.kind is EventKind.STOMP for e in events):
+            break
+    assert [e.kind for e in events].count(EventKind.STOMP) == 1
+    assert len(world.enemies) == 0
+    assert world.player.vy < 0                      # bounced
+    assert not any(e.kind is EventKind.HURT for e in events)
+
+
+def test_walking_into_an_enemy_from_the_side_costs_a_life() -> None:
+    level = level_from_ascii([
+        "          ",
+        " P    E   ",
+        "##########",
+    ])
+    campaign = Campaign(Path("x.tmx"), Tuning(enemy_speed_px_s=0.0),
+                        loader=lambda _: level)
+    for _ in range(120):
+        campaign.tick(RIGHT)
+        if campaign.deaths:
+            break
+    assert campaign.deaths == 1 and campaign.lives == 2
+    assert campaign.enemies_stomped == 0
+    assert len(campaign.world.enemies) == 1
+    assert campaign.world.player.box.x == level.spawn.x   # back at the spawn
+
+
+def test_two_coins_touched_in_one_tick_are_both_counted() -> None:
+    level = level_from_ascii([
+        "      ",
+        " P CC ",
+        "######",
+    ], spawn=Box(16, 18, 12, 14))
+    campaign = Campaign(Path("x.tmx"), Tuning(run_speed_px_s=60 * 40.0),
+                        loader=lambda _: level)
+    campaign.tick(RIGHT)             # 40 px in one tick: over both coins at once
+    assert campaign.coins_collected == 2
+    assert campaign.score == 2
+    assert len(campaign.world.coins) == 0
+
+
+def test_falling_out_of_the_map_costs_a_life_and_the_last_life_ends_the_game() -> None:
+    level = level_from_ascii(["P  ", "   ", "   "])
+    campaign = Campaign(Path("x.tmx"), loader=lambda _: level)
+    for _ in range(2000):
+        campaign.tick(NOTHING)
+        if campaign.outcome is not Outcome.RUNNING:
+            break
+    assert campaign.outcome is Outcome.GAME_OVER
+    assert campaign.deaths == 3 and campaign.lives == 0
+
+
+def test_touching_a_hazard_costs_a_life() -> None:
+    level = level_from_ascii(["     ", " P ^ ", "#####"])
+    campaign = Campaign(Path("x.tmx"), loader=lambda _: level)
+    for _ in range(100):
+        campaign.tick(RIGHT)
+        if campaign.deaths:
+            break
+    assert campaign.deaths == 1
+
+
+def test_the_exit_completes_the_level_and_the_last_one_wins() -> None:
+    first = level_from_ascii(["       ", " P   D ", "#######"])
+    first = Level(**{**first.__dict__, "next_level": Path("second.tmx")})
+    second = level_from_ascii(["       ", " P  D  ", "#######"])
+    levels = {Path("first.tmx"): first, Path("second.tmx"): second}
+    campaign = Campaign(Path("first.tmx"), loader=levels.__getitem__)
+    for _ in range(600):
+        campaign.tick(RIGHT)
+        if campaign.outcome is not Outcome.RUNNING:
+            break
+    assert campaign.levels_completed == 2
+    assert campaign.outcome is Outcome.WON
+
+
+def test_x_is_resolved_before_y_on_an_outer_corner_hit() -> None:
+    # Moving down-right by the same amount on both axes into a block's top-left corner:
+    # the x pass runs first with the body still above the block, so x goes the whole way;
+    # then the y pass lands it on the block's top. Same result every run.
+    # Corner of the body at (22, 24), corner of the block at (32, 32), a 12 px step on each
+    # axis. y first would instead have stopped the body against the block's side.
+    level = level_from_ascii(["P     ", "      ", "  ##  ", "######"],
+                             spawn=Box(10, 10, 12, 14))
+    world = World(level, Tuning(run_speed_px_s=720.0, gravity_px_s2=0.0,
+                                max_fall_speed_px_s=720.0))
+    world.player.vy = 720.0
+    world.step(RIGHT)
+    assert world.player.box.x == 22.0
+    assert world.player.box.bottom == 32.0
+    assert world.player.on_ground
+
+
+def test_a_jump_leaves_the_ground_and_lands_again_flush() -> None:
+    world = World(level_from_ascii(FLAT))
+    for _ in range(5):
+        world.step(NOTHING)
+    floor_y = world.player.box.y
+    world.step(JUMP)
+    assert not world.player.on_ground and world.player.vy < 0
+    highest = floor_y
+    for _ in range(120):
+        world.step(JUMP)
+        highest = min(highest, world.player.box.y)
+    assert world.player.box.y == floor_y and world.player.on_ground
+    assert floor_y - highest > 16
+
+
+def test_map_physics_properties_are_honoured_however_large() -> None:
+    props: dict[str, object] = {"gravity": 1e7, "max_fall_speed": 9 * 16 * 60.0,
+                                "run_speed": 9 * 16 * 60.0, "jump_speed": 1.0}
+    level = level_from_ascii([
+        "P                              ",
+        "                               ",
+        "                               ",
+        "                               ",
+        "                               ",
+        "                               ",
+        "                               ",
+        "                               ",
+        "                               ",
+        "                               ",
+        "                              #",
+        "###############################",
+    ], props)
+    world = World(level)
+    assert world.tuning.gravity_px_s2 == 1e7
+    world.step(NOTHING)   # 9 tiles in one tick: lands flush on the floor at y = 176
+    world.step(NOTHING)
+    assert world.player.box.bottom == 11 * 16 and world.player.on_ground
+    world.step(RIGHT)
+    world.step(RIGHT)
+    world.step(RIGHT)
+    world.step(RIGHT)
+    assert world.player.box.right == 30 * 16          # flush against the one-tile wall
+    assert world.max_penetration_px == 0.0
+
+
+def test_a_five_second_stall_runs_a_capped_number_of_ticks_and_passes_no_wall() -> None:
+    world = World(level_from_ascii(["        ", "P    #  ", "########"]),
+                  Tuning(run_speed_px_s=3000.0))
+    clock = FixedStep()
+    ticks = clock.advance(5.0)
+    assert ticks == clock.max_ticks_per_frame
+    for _ in range(ticks):
+        world.step(RIGHT)
+    assert world.player.box.right == 5 * 16
+    assert world.max_penetration_px == 0.0
+    assert clock.advance(1 / 60) == 1           # the backlog was dropped, not replayed
+
+
+@pytest.mark.parametrize("frame_s", [0.0, -1.0, float("nan")])
+def test_frames_of_zero_or_negative_time_run_no_ticks(frame_s: float) -> None:
+    assert FixedStep().advance(frame_s) == 0
+
+
+def test_enemies_turn_at_walls_and_ledges() -> None:
+    level = level_from_ascii([
+        "P               ",
+        "                ",
+        "      E    #    ",
+        "   #########    ",
+        "                ",
+    ])
+    world = World(level, Tuning(enemy_speed_px_s=120.0))
+    enemy = next(iter(world.enemies))
+    xs = []
+    for _ in range(400):
+        world.step(NOTHING)
+        xs.append(enemy.box.x)
+    assert min(xs) >= 3 * 16 - 1e-9            # never walked off the left ledge
+    assert max(xs) + enemy.box.w <= 11 * 16     # never walked into the wall on the right
+    assert min(xs) < 4 * 16 and max(xs) > 9 * 16   # but did patrol the whole floor
