@@ -1,0 +1,147 @@
+"""``python -m game`` as scripts use it: options, exit codes, the report, replay."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from tests.maps import write_tmx
+
+ROOT = Path(__file__).resolve().parent.parent
+ENV = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy"}
+REPORT_KEYS = {"ticks", "outcome", "level", "levels_completed", "score", "coins_collected",
+               "coins_left", "enemies_stomped", "enemies_left", "lives", "deaths", "player",
+               "max_penetration_px", "timing"}
+PLAYER_KEYS = {"x", "y", "width", "height", "vx", "vy", "on_ground"}
+TIMING_KEYS = {"update_ms_median", "update_ms_p95", "collision_ms_median"}
+
+
+def game(*args: str | Path, cwd: Path = ROOT) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "game", *map(str, args)], cwd=cwd, env=ENV,
+                          capture_output=True, text=True, timeout=120, check=False)
+
+
+def report_of(tmp_path: Path, *args: str | Path) -> dict[str, object]:
+    out = tmp_path / "report.json"
+    result = game("--headless", "--report", out, *args)
+    assert result.returncode == 0, result.stderr
+    data: dict[str, object] = json.loads(out.read_text())
+    return data
+
+
+def test_the_report_has_every_key_of_the_contract(tmp_path: Path) -> None:
+    report = report_of(tmp_path, "--ticks", "30")
+    assert set(report) == REPORT_KEYS
+    player = report["player"]
+    timing = report["timing"]
+    assert isinstance(player, dict) and set(player) == PLAYER_KEYS
+    assert isinstance(timing, dict) and set(timing) == TIMING_KEYS
+    assert report["ticks"] == 30 and report["outcome"] == "running"
+    assert report["level"] == "levels/01-first-steps.tmx"
+
+
+def test_the_same_inputs_give_the_same_report(tmp_path: Path) -> None:
+    script = ROOT / "tests/scripts/01-first-steps.txt"
+    first = report_of(tmp_path, "--ticks", "500", "--inputs", script)
+    second = report_of(tmp_path, "--ticks", "500", "--inputs", script)
+    first.pop("timing")
+    second.pop("timing")
+    assert first == second
+
+
+def test_a_recorded_run_replays_to_the_same_report(tmp_path: Path) -> None:
+    script = ROOT / "tests/scripts/01-first-steps.txt"
+    recorded = tmp_path / "recorded.txt"
+    original = report_of(tmp_path, "--ticks", "400", "--inputs", script, "--record", recorded)
+    replayed = report_of(tmp_path, "--ticks", "400", "--inputs", recorded)
+    original.pop("timing")
+    replayed.pop("timing")
+    assert original == replayed
+
+
+def test_a_player_on_an_unseen_level_stops_flush_at_9_tiles_per_tick(tmp_path: Path) -> None:
+    speed = 9 * 16 * 60  # px/s
+    level = write_tmx(tmp_path, [
+        "P                             ",
+        "                              ",
+        "                              ",
+        "                              ",
+        "                              ",
+        "                              ",
+        "                              ",
+        "                              ",
+        "                              ",
+        "                              ",
+        "                             #",
+        "##############################",
+    ], properties={"gravity": ("float", speed * 60), "max_fall_speed": ("float", speed),
+                   "run_speed": ("float", speed)})
+    inputs = tmp_path / "in.txt"
+    inputs.write_text("5 +right\n")
+    report = report_of(tmp_path, "--level", level, "--ticks", "20", "--inputs", inputs)
+    player = report["player"]
+    assert isinstance(player, dict)
+    assert player["x"] + player["width"] == 29 * 16
+    assert player["y"] + player["height"] == 11 * 16 and player["on_ground"] is True
+    assert report["max_penetration_px"] == 0.0
+
+
+def test_tiled_1_9_class_attributes_are_read_like_type(tmp_path: Path) -> None:
+    rows = ["        ", " P  C  D", "########"]
+    inputs = tmp_path / "in.txt"
+    inputs.write_text("0 +right\n")
+    for attr in ("type", "class"):
+        folder = tmp_path / attr
+        folder.mkdir()
+        report = report_of(tmp_path, "--level", write_tmx(folder, rows, class_attr=attr),
+                           "--inputs", inputs, "--ticks", "200")
+        assert report["outcome"] == "won" and report["coins_collected"] == 1, attr
+
+
+def test_debug_screenshot_writes_a_png(tmp_path: Path) -> None:
+    shot = tmp_path / "shot.png"
+    result = game("--headless", "--ticks", "10", "--debug", "--screenshot", shot)
+    assert result.returncode == 0, result.stderr
+    assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_a_missing_level_exits_1_with_one_sentence(tmp_path: Path) -> None:
+    result = game("--headless", "--ticks", "5", "--level", tmp_path / "nope.tmx")
+    assert result.returncode == 1
+    assert "Traceback" not in result.stderr
+    assert result.stderr.strip().count("\n") == 0 and "nope.tmx" in result.stderr
+
+
+def test_a_broken_level_exits_1_without_a_traceback(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.tmx"
+    bad.write_text("<map><layer>")
+    result = game("--headless", "--ticks", "5", "--level", bad)
+    assert result.returncode == 1
+    assert "Traceback" not in result.stderr and "bad.tmx" in result.stderr
+
+
+def test_a_bad_input_line_exits_2_naming_the_line(tmp_path: Path) -> None:
+    inputs = tmp_path / "in.txt"
+    inputs.write_text("# fine\n0 +right\n10 +fly\n")
+    result = game("--headless", "--ticks", "5", "--inputs", inputs)
+    assert result.returncode == 2
+    assert "line 3" in result.stderr and "Traceback" not in result.stderr
+
+
+def test_decreasing_ticks_in_an_input_script_are_refused(tmp_path: Path) -> None:
+    inputs = tmp_path / "in.txt"
+    inputs.write_text("10 +right\n5 -right\n")
+    result = game("--headless", "--ticks", "5", "--inputs", inputs)
+    assert result.returncode == 2 and "line 2" in result.stderr
+
+
+@pytest.mark.parametrize("args", [["--ticks", "-3"], ["--ticks", "many"], ["--frobnicate"]])
+def test_bad_usage_exits_2(args: list[str]) -> None:
+    result = game("--headless", *args)
+    assert result.returncode == 2
+    assert "Traceback" not in result.stderr
