@@ -14,6 +14,7 @@ import pygame
 
 from game.aabb import Box
 from game.movement import Move
+from game.tilegrid import TileKind, TileShape
 
 
 class Body(pygame.sprite.Sprite):
@@ -27,6 +28,8 @@ class Body(pygame.sprite.Sprite):
         self.vx = 0.0  # px/s, right is positive
         self.vy = 0.0  # px/s, down is positive
         self.on_ground = False
+        self.standing_on: TileShape | None = None  # what the ground probe found
+        self.corner_correction_px = 0.0  # how far a head bump may slide past a corner
         self.last_x: Move | None = None  # recorded for the debug overlay
         self.last_y: Move | None = None
         self.image = pygame.Surface((max(1, int(box.w)), max(1, int(box.h))))
@@ -37,6 +40,15 @@ class Body(pygame.sprite.Sprite):
         """Place the body somewhere new with no path behind it (a respawn, a level start)."""
         self.place(box)
         self.last_x = self.last_y = None
+
+    @property
+    def dropping_through(self) -> bool:
+        """True while the body ignores one-way platforms (the player's down + jump)."""
+        return False
+
+    @property
+    def on_ground_one_way(self) -> bool:
+        return self.standing_on is not None and self.standing_on.kind is TileKind.ONE_WAY
 
     def react(self, x_move: Move, y_move: Move) -> None:
         """Respond to what this tick's two axis moves hit; subclasses decide how."""

@@ -138,12 +138,47 @@ def move_y(grid: TileGrid, box: Box, dy: float, *, through_one_way: bool = False
     return Move(box._replace(y=stop), hit, swept, box)
 
 
-def ground_under(grid: TileGrid, box: Box) -> TileShape | None:
+def slide_past_ceiling_corner(grid: TileGrid, box: Box, dy: float,
+                              max_px: float) -> tuple[Move, Move] | None:
+    """Corner correction: a rise blocked by a ceiling's corner by ``max_px`` or less slides past.
+
+    Returns the sideways move and the rise from there, or None when no slide of at most
+    ``max_px`` (the smaller one first; left first on a tie) is free and lets the rise go on.
+
+    >>> from game.tilegrid import TileGrid, TileShape, TileKind
+    >>> grid = TileGrid(cols=10, rows=10, tile_w=16, tile_h=16)
+    >>> grid.put(3, 2, TileShape(Box(48, 32, 16, 16), TileKind.SOLID))
+    >>> side, rise = slide_past_ceiling_corner(grid, Box(37, 50, 12, 14), -10.0, 4.0)
+    >>> side.box.x, rise.box.y, rise.hit
+    (36, 40.0, None)
+    """
+    blocked = move_y(grid, box, dy)
+    if blocked.hit is None or blocked.hit.side is not Side.TOP or blocked.hit.shape is None:
+        return None
+    ceiling = blocked.hit.shape.box
+    shifts = sorted((ceiling.left - box.right, ceiling.right - box.left), key=abs)
+    for shift in shifts:
+        if shift == 0 or abs(shift) > max_px:
+            continue
+        side = move_x(grid, box, shift)
+        if side.hit is not None:
+            continue
+        rise = move_y(grid, side.box, dy)
+        if rise.box.top < blocked.box.top:
+            return side, rise
+    return None
+
+
+def ground_under(grid: TileGrid, box: Box, *, through_one_way: bool = False,
+                 ) -> TileShape | None:
     """The solid or one-way shape whose top lies exactly at the feet, if any (the probe)."""
     probe = Box(box.x, box.bottom, box.w, GROUND_PROBE_PX)
     for shape in grid.shapes_in(probe):
-        if shape.kind is not TileKind.HAZARD and shape.box.top == box.bottom:
-            return shape
+        if shape.box.top != box.bottom or shape.kind is TileKind.HAZARD:
+            continue
+        if shape.kind is TileKind.ONE_WAY and through_one_way:
+            continue
+        return shape
     return None
 
 

@@ -52,6 +52,7 @@ PLAYER_RUN_FPS = 12
 PLAYER_RUN_FRAMES = (2, 3, 4, 5)
 PLAYER_JUMP_FRAME = 6  # rising
 PLAYER_FALL_FRAME = 7
+BLINK_HZ = 10  # while invulnerable after a hit, the player flickers at this rate
 
 OPAQUE = 255  # surface alpha of a fully opaque layer
 ARGB_HEX_DIGITS = 8  # Tiled writes "#aarrggbb" when the background colour has alpha
@@ -194,8 +195,10 @@ def _draw_sprites(target: pygame.Surface, world: World, assets: Assets, frame: i
         _blit_anchored(target, assets.enemy_frames[index], enemy.box, camera,
                        flip=enemy.direction < 0)
     player = world.player
-    _blit_anchored(target, assets.player_frames[player_frame(player, frame)], player.box,
-                   camera, flip=player.facing < 0)
+    blink_off = player.invulnerable and (frame * 2 * BLINK_HZ // ANIMATION_HZ) % 2 == 1
+    if not blink_off:
+        _blit_anchored(target, assets.player_frames[player_frame(player, frame)], player.box,
+                       camera, flip=player.facing < 0)
 
 
 def draw_world(target: pygame.Surface, world: World, assets: Assets, frame: int) -> None:

@@ -33,7 +33,17 @@ class Tuning:
     gravity_px_s2: float = 900.0
     jump_speed_px_s: float = 290.0
     max_fall_speed_px_s: float = 360.0
+    # Game feel: how a run starts and stops, and the forgiving edges of a jump.
+    run_accel_time_s: float = 0.05         # standing to full run speed, on the ground
+    run_stop_time_s: float = 0.05          # full run speed to standing, on the ground
+    air_accel_time_s: float = 0.10         # the same in the air: less grip, still steerable
+    air_stop_time_s: float = 0.20
+    jump_cut_ratio: float = 0.5            # upward speed kept when jump is released early
+    coyote_time_s: float = 0.1             # a jump still works this long after a ledge
+    jump_buffer_s: float = 0.1             # a jump pressed this long before landing happens
+    corner_correction_px: float = 4.0      # a head bump this close to a ceiling's corner slides
     stomp_bounce_px_s: float = 200.0       # upward speed after stomping an enemy
+    invulnerable_time_s: float = 1.5       # after losing a life, enemies and spikes can't hurt
     enemy_speed_px_s: float = 30.0         # default patrol speed (an Enemy's ``speed``)
     player_width_px: int = 12              # hitbox of a point-shaped Player spawn
     player_height_px: int = 14
@@ -45,6 +55,32 @@ class Tuning:
     @property
     def run_speed_px_tick(self) -> float:
         return self.run_speed_px_s * self.tick_s
+
+    @property
+    def invulnerable_ticks(self) -> int:
+        return round(self.invulnerable_time_s / self.tick_s)
+
+    @property
+    def coyote_ticks(self) -> int:
+        return round(self.coyote_time_s / self.tick_s)
+
+    @property
+    def jump_buffer_ticks(self) -> int:
+        return round(self.jump_buffer_s / self.tick_s)
+
+    def run_change_px_s(self, on_ground: bool, speeding_up: bool) -> float:
+        """How much the run speed may change in one tick (px/s), from the times above.
+
+        Rates are derived from the run speed, so a level that sets ``run_speed`` very high
+        or very low keeps the same feel: full speed in the same number of ticks.
+        """
+        if on_ground:
+            seconds = self.run_accel_time_s if speeding_up else self.run_stop_time_s
+        else:
+            seconds = self.air_accel_time_s if speeding_up else self.air_stop_time_s
+        if seconds <= 0:
+            return float("inf")
+        return self.run_speed_px_s * self.tick_s / seconds
 
     def with_map_properties(self, properties: Mapping[str, object]) -> Tuning:
         """This tuning with a level's physics properties (px/s or px/s²) applied as given."""

@@ -32,7 +32,16 @@ from game.camera import Camera
 from game.enemy import Enemy
 from game.inputs import Actions
 from game.level import Level
-from game.movement import ground_under, move_x, move_y, penetration_depth, touching
+from game.movement import (
+    Move,
+    Side,
+    ground_under,
+    move_x,
+    move_y,
+    penetration_depth,
+    slide_past_ceiling_corner,
+    touching,
+)
 from game.pickups import Coin, Exit
 from game.player import Player
 from game.tilegrid import TileKind
@@ -81,7 +90,7 @@ class World:
     def __post_init__(self) -> None:
         self.tuning = self.tuning.with_map_properties(self.level.properties)
         self.grid = self.level.grid
-        self.player = Player(self.level.spawn)
+        self.player = Player(self.level.spawn, self.tuning)
         self.players: pygame.sprite.GroupSingle[Player] = pygame.sprite.GroupSingle(self.player)
         self.enemies: pygame.sprite.Group[Enemy] = pygame.sprite.Group(
             Enemy(spec.box, spec.speed_px_s if spec.speed_px_s is not None
@@ -93,7 +102,8 @@ class World:
             Exit(box) for box in self.level.exits)
         self.stats = TickStats()
         self.max_penetration_px = 0.0
-        self.player.on_ground = ground_under(self.grid, self.player.box) is not None
+        self.player.standing_on = ground_under(self.grid, self.player.box)
+        self.player.on_ground = self.player.standing_on is not None
         self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
 
     def bodies(self) -> list[Body]:
@@ -108,9 +118,7 @@ class World:
         started = time.perf_counter()
 
         # 1. Intent: entities choose velocities; none of them moves itself.
-        was_on_ground = self.player.on_ground
-        self.player.decide(held, self.tuning)
-        if was_on_ground and not self.player.on_ground:
+        if self.player.decide(held, self.tuning):
             events.append(Event(EventKind.JUMP))
         for enemy in self.enemies:
             enemy.decide(self.grid, self.tuning)
@@ -124,9 +132,10 @@ class World:
 
         # 3. y pass: the same along y, then probe one pixel below the feet.
         for body in bodies:
-            body.last_y = move_y(self.grid, body.box, body.vy * dt)
-            body.place(body.last_y.box)
-            body.on_ground = ground_under(self.grid, body.box) is not None
+            self._move_y(body, body.vy * dt)
+            body.standing_on = ground_under(self.grid, body.box,
+                                            through_one_way=body.dropping_through)
+            body.on_ground = body.standing_on is not None
 
         # 4. React: each body reads what its own moves hit.
         for body in bodies:
@@ -148,12 +157,13 @@ class World:
                 enemy.kill()
                 self.player.bounce(self.tuning.stomp_bounce_px_s)
                 events.append(Event(EventKind.STOMP, 1, enemy.box))
-            else:
+            elif not self.player.invulnerable:
                 hurt = True
 
         # 7. Hazards and the void: spikes and falling below the map cost a life.
         moves = (self.player.last_x, self.player.last_y)
-        if any(m and touching(self.grid, m.path, TileKind.HAZARD) for m in moves):
+        if not self.player.invulnerable and any(
+                m and touching(self.grid, m.path, TileKind.HAZARD) for m in moves):
             hurt = True
         if self.player.box.top >= self.grid.height_px:
             hurt = True
@@ -162,7 +172,7 @@ class World:
                 enemy.kill()
         if hurt and not any(e.kind is EventKind.EXIT for e in events):
             events.append(Event(EventKind.HURT, 1, self.player.box))
-            self.player.respawn(self.level.spawn)
+            self.player.respawn(self.level.spawn, self.tuning.invulnerable_ticks)
 
         self.stats = TickStats(self.grid.stats.cells_visited, self.grid.stats.shapes_tested,
                                time.perf_counter() - started)
@@ -174,6 +184,19 @@ class World:
         # 8. Camera: follow the player, inside the map.
         self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
         return events
+
+    def _move_y(self, body: Body, dy: float) -> None:
+        """The y pass for one body, with corner correction for a rise that clips a ceiling."""
+        move = move_y(self.grid, body.box, dy, through_one_way=body.dropping_through)
+        if move.hit is not None and move.hit.side is Side.TOP and body.corner_correction_px:
+            slid = slide_past_ceiling_corner(self.grid, body.box, dy,
+                                             body.corner_correction_px)
+            if slid is not None:
+                side, move = slid
+                run = body.last_x or side
+                body.last_x = Move(side.box, run.hit, run.swept.union(side.swept), run.start)
+        body.last_y = move
+        body.place(move.box)
 
     @staticmethod
     def _came_from_above(player_before: Box, enemy_before: Box) -> bool:

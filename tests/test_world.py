@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -20,6 +21,8 @@ from tests.maps import level_from_ascii
 RIGHT = frozenset({Action.RIGHT})
 LEFT = frozenset({Action.LEFT})
 JUMP = frozenset({Action.JUMP})
+# Full run speed from the first tick: these tests are about collision, not acceleration.
+INSTANT = Tuning(run_accel_time_s=0, run_stop_time_s=0, air_accel_time_s=0, air_stop_time_s=0)
 
 FLAT = [
     "                    ",
@@ -43,7 +46,7 @@ def test_standing_for_600_ticks_never_moves_a_pixel_or_leaves_the_ground() -> No
 
 
 def test_running_across_the_floor_seams_never_stops() -> None:
-    world = World(level_from_ascii(FLAT), Tuning(run_speed_px_s=60.0))
+    world = World(level_from_ascii(FLAT), replace(INSTANT, run_speed_px_s=60.0))
     for _ in range(10):
         world.step(NOTHING)
     xs = []
@@ -59,7 +62,7 @@ def test_running_across_the_floor_seams_never_stops() -> None:
 @pytest.mark.parametrize("action", [RIGHT, LEFT])
 def test_a_tenth_of_a_pixel_per_tick_moves_the_player(action: frozenset[Action]) -> None:
     world = World(level_from_ascii(["          ", "    P     ", "##########"]),
-                  Tuning(run_speed_px_s=6.0))          # 0.1 px per tick
+                  replace(INSTANT, run_speed_px_s=6.0))          # 0.1 px per tick
     for _ in range(5):
         world.step(NOTHING)
     start = world.player.box.x
@@ -78,7 +81,7 @@ def test_landing_on_an_enemy_from_above_stomps_it_and_bounces() -> None:
         "   E    ",
         "########",
     ])
-    world = World(level, Tuning(enemy_speed_px_s=0.0))
+    world = World(level, replace(INSTANT, enemy_speed_px_s=0.0))
     events = []
     for _ in range(60):
         events += world.step(NOTHING)
@@ -96,7 +99,7 @@ def test_walking_into_an_enemy_from_the_side_costs_a_life() -> None:
         " P    E   ",
         "##########",
     ])
-    campaign = Campaign(Path("x.tmx"), Tuning(enemy_speed_px_s=0.0),
+    campaign = Campaign(Path("x.tmx"), replace(INSTANT, enemy_speed_px_s=0.0),
                         loader=lambda _: level)
     for _ in range(120):
         campaign.tick(RIGHT)
@@ -114,7 +117,7 @@ def test_two_coins_touched_in_one_tick_are_both_counted() -> None:
         " P CC ",
         "######",
     ], spawn=Box(16, 18, 12, 14))
-    campaign = Campaign(Path("x.tmx"), Tuning(run_speed_px_s=60 * 40.0),
+    campaign = Campaign(Path("x.tmx"), replace(INSTANT, run_speed_px_s=60 * 40.0),
                         loader=lambda _: level)
     campaign.tick(RIGHT)             # 40 px in one tick: over both coins at once
     assert campaign.coins_collected == 2
@@ -165,7 +168,7 @@ def test_x_is_resolved_before_y_on_an_outer_corner_hit() -> None:
     # axis. y first would instead have stopped the body against the block's side.
     level = level_from_ascii(["P     ", "      ", "  ##  ", "######"],
                              spawn=Box(10, 10, 12, 14))
-    world = World(level, Tuning(run_speed_px_s=720.0, gravity_px_s2=0.0,
+    world = World(level, replace(INSTANT, run_speed_px_s=720.0, gravity_px_s2=0.0,
                                 max_fall_speed_px_s=720.0))
     world.player.vy = 720.0
     world.step(RIGHT)
@@ -206,7 +209,7 @@ def test_map_physics_properties_are_honoured_however_large() -> None:
         "                              #",
         "###############################",
     ], props)
-    world = World(level)
+    world = World(level, INSTANT)
     assert world.tuning.gravity_px_s2 == 1e7
     world.step(NOTHING)   # 9 tiles in one tick: lands flush on the floor at y = 176
     world.step(NOTHING)
@@ -221,7 +224,7 @@ def test_map_physics_properties_are_honoured_however_large() -> None:
 
 def test_a_five_second_stall_runs_a_capped_number_of_ticks_and_passes_no_wall() -> None:
     world = World(level_from_ascii(["        ", "P    #  ", "########"]),
-                  Tuning(run_speed_px_s=3000.0))
+                  replace(INSTANT, run_speed_px_s=3000.0))
     clock = FixedStep()
     ticks = clock.advance(5.0)
     assert ticks == clock.max_ticks_per_frame
@@ -245,7 +248,7 @@ def test_enemies_turn_at_walls_and_ledges() -> None:
         "   #########    ",
         "                ",
     ])
-    world = World(level, Tuning(enemy_speed_px_s=120.0))
+    world = World(level, replace(INSTANT, enemy_speed_px_s=120.0))
     enemy = next(iter(world.enemies))
     xs = []
     for _ in range(400):
