@@ -14,6 +14,7 @@ from pathlib import Path
 from game.inputs import Actions
 from game.level import Level
 from game.levels import load_level
+from game.movement import ground_under, penetration_depth
 from game.tuning import Tuning
 from game.world import Event, EventKind, World
 
@@ -76,6 +77,21 @@ class Campaign:
             self.outcome = Outcome.WON
         else:
             self.world = World(self.loader(next_level), self.tuning)
+
+    def reload(self, level: Level) -> None:
+        """Swap in a new version of the current level (``--watch``), keeping the run going.
+
+        The player keeps its place and speed where the new map leaves that place free;
+        otherwise it starts again at the new spawn. Coins and enemies come from the new map.
+        """
+        old = self.world.player
+        self.world = World(level, self.tuning)
+        player = self.world.player
+        if penetration_depth(level.grid, old.box) == 0.0 and old.box.top < level.grid.height_px:
+            player.teleport(old.box)
+            player.vx, player.vy, player.facing = old.vx, old.vy, old.facing
+            player.standing_on = ground_under(level.grid, old.box)
+            player.on_ground = player.standing_on is not None
 
     def restart_level(self) -> None:
         """Start the current level again from its spawn (the pause menu's Restart)."""

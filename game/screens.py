@@ -28,6 +28,7 @@ from game.hud import (
     TEXT_COLOR,
     Color,
     draw_text,
+    fit_text,
     translucent_rect,
 )
 from game.render import ANIMATION_HZ, animation_index
@@ -228,3 +229,41 @@ def draw_game_over(target: pygame.Surface, assets: Assets, campaign: Campaign) -
 def draw_win(target: pygame.Surface, assets: Assets, campaign: Campaign) -> None:
     """Dim the last frame and celebrate: the final score, coins and deaths."""
     _draw_result(target, assets, campaign, "You Win!", WIN_COLOR)
+
+
+ERROR_COLOR: Color = (255, 150, 150)
+ERROR_PANEL: Color = (40, 0, 0, 220)
+ERROR_MAX_LINES = 5
+
+
+def wrap_text(font: pygame.font.Font, text: str, max_w: int) -> list[str]:
+    """Break ``text`` into lines no wider than ``max_w`` pixels, at spaces where possible."""
+    lines: list[str] = []
+    line = ""
+    for word in text.split():
+        candidate = f"{line} {word}" if line else word
+        if font.size(candidate)[0] <= max_w or not line:
+            line = candidate
+        else:
+            lines.append(line)
+            line = word
+    if line:
+        lines.append(line)
+    return lines
+
+
+def draw_error_banner(target: pygame.Surface, assets: Assets, message: str) -> None:
+    """A reload that failed (``--watch``): the loader's sentence, over the still-running level."""
+    width = target.get_width() - 2 * PANEL_PAD_PX
+    font = assets.small_font
+    lines = wrap_text(font, "Not reloaded: " + message, width - 2 * PANEL_PAD_PX)
+    lines = lines[:ERROR_MAX_LINES]
+    line_h = font.get_linesize()
+    height = len(lines) * line_h + 2 * PANEL_PAD_PX
+    panel = pygame.Rect(PANEL_PAD_PX, target.get_height() - height - PANEL_PAD_PX,
+                        width, height)
+    translucent_rect(target, panel, ERROR_PANEL)
+    for number, text in enumerate(lines):
+        draw_text(target, font, fit_text(font, text, panel.w - 2 * PANEL_PAD_PX),
+                  (panel.x + PANEL_PAD_PX, panel.y + PANEL_PAD_PX + number * line_h),
+                  ERROR_COLOR, outline=None, antialias=SMALL_TEXT_ANTIALIAS)

@@ -10,6 +10,7 @@ the title and ends at the end of the run, like a headless one.
 
 from __future__ import annotations
 
+import time
 from enum import Enum
 
 import pygame
@@ -19,15 +20,18 @@ from game.assets import Assets, load_assets
 from game.campaign import Campaign, Outcome
 from game.debug_overlay import draw_debug
 from game.hud import draw_hud
+from game.levels import LevelError
 from game.loop import FixedStep
 from game.render import draw_world
 from game.screens import (
     PAUSE_ITEMS,
+    draw_error_banner,
     draw_game_over,
     draw_pause,
     draw_title,
     draw_win,
 )
+from game.watch import FileWatcher
 
 CONFIRM_KEYS = (pygame.K_RETURN, pygame.K_KP_ENTER, pygame.K_SPACE)
 PAUSE_KEYS = (pygame.K_ESCAPE, pygame.K_p)
@@ -63,6 +67,8 @@ def play_in_window(run: Run) -> int:
     selected = 0
     frame = 0
     first_level = run.campaign.world.level.path
+    watcher: FileWatcher | None = None
+    reload_error: str | None = None
     while True:
         frame_s = clock.tick(TARGET_FPS) / 1000.0
         frame += 1
@@ -94,6 +100,18 @@ def play_in_window(run: Run) -> int:
             elif screen is Screen.ENDED and event.key in CONFIRM_KEYS:
                 screen = Screen.TITLE
 
+        # Reload on save (--watch): a bad save keeps the old level and shows why.
+        if run.args.watch:
+            path = run.campaign.world.level.path
+            if watcher is None or watcher.level_path != path:
+                watcher, reload_error = FileWatcher(path), None
+            elif watcher.poll(time.monotonic()):
+                try:
+                    run.campaign.reload(run.campaign.loader(path))
+                    reload_error = None
+                except LevelError as error:
+                    reload_error = str(error)
+
         # 2. Ticks: as many fixed 1/60 s steps as real time has paid for.
         if screen is Screen.PLAYING:
             for _ in range(stepper.advance(frame_s)):
@@ -111,6 +129,8 @@ def play_in_window(run: Run) -> int:
         # 3. Draw: the world, the HUD, the overlay, then whatever screen is up.
         target = render_frame(run.campaign, debug=debug, assets=assets, frame=frame,
                               fps=clock.get_fps(), update_ms=_last_update_ms(run))
+        if reload_error is not None:
+            draw_error_banner(target, assets, reload_error)
         if screen is Screen.TITLE:
             draw_title(target, assets, frame)
         elif screen is Screen.PAUSED:
