@@ -27,6 +27,7 @@ class CoinSpec:
 class EnemySpec:
     box: Box
     speed_px_s: float | None = None  # None: the game's default patrol speed
+    kind: str = "walker"             # "walker" patrols; "hopper" patrols in hops
 
 
 @dataclass(frozen=True)

@@ -29,7 +29,7 @@ import pygame
 from game.aabb import Box
 from game.assets import Assets
 from game.camera import Camera
-from game.enemy import Enemy
+from game.enemy import Enemy, EnemyKind
 from game.level import TileLayer
 from game.player import Player
 from game.world import World
@@ -45,6 +45,8 @@ COIN_PHASE_COL_PX = 16
 
 ENEMY_WALK_FPS = 4
 ENEMY_WALK_FRAMES = (0, 1)
+HOPPER_SITTING_FRAME = 3
+HOPPER_AIRBORNE_FRAME = 4
 
 PLAYER_IDLE_FPS = 2
 PLAYER_IDLE_FRAMES = (0, 1)
@@ -191,7 +193,10 @@ def _draw_sprites(target: pygame.Surface, world: World, assets: Assets, frame: i
         _blit_anchored(target, assets.coin_frames[index], coin.box, camera, centre_y=True)
     enemy: Enemy
     for number, enemy in enumerate(world.enemies):
-        index = animation_index(frame, ENEMY_WALK_FPS, ENEMY_WALK_FRAMES, number)
+        if enemy.kind is EnemyKind.HOPPER:
+            index = HOPPER_SITTING_FRAME if enemy.on_ground else HOPPER_AIRBORNE_FRAME
+        else:
+            index = animation_index(frame, ENEMY_WALK_FPS, ENEMY_WALK_FRAMES, number)
         _blit_anchored(target, assets.enemy_frames[index], enemy.box, camera,
                        flip=enemy.direction < 0)
     player = world.player

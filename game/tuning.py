@@ -45,6 +45,8 @@ class Tuning:
     stomp_bounce_px_s: float = 200.0       # upward speed after stomping an enemy
     invulnerable_time_s: float = 1.5       # after losing a life, enemies and spikes can't hurt
     enemy_speed_px_s: float = 30.0         # default patrol speed (an Enemy's ``speed``)
+    hopper_jump_speed_px_s: float = 220.0  # a hopper's take-off speed
+    hopper_rest_s: float = 0.8             # how long a hopper sits between hops
     player_width_px: int = 12              # hitbox of a point-shaped Player spawn
     player_height_px: int = 14
     enemy_width_px: int = 14
@@ -59,6 +61,10 @@ class Tuning:
     @property
     def invulnerable_ticks(self) -> int:
         return round(self.invulnerable_time_s / self.tick_s)
+
+    @property
+    def hopper_rest_ticks(self) -> int:
+        return round(self.hopper_rest_s / self.tick_s)
 
     @property
     def coyote_ticks(self) -> int:

@@ -29,7 +29,7 @@ import pygame
 from game.aabb import Box
 from game.body import Body
 from game.camera import Camera
-from game.enemy import Enemy
+from game.enemy import Enemy, EnemyKind
 from game.inputs import Actions
 from game.level import Level
 from game.movement import (
@@ -94,7 +94,7 @@ class World:
         self.players: pygame.sprite.GroupSingle[Player] = pygame.sprite.GroupSingle(self.player)
         self.enemies: pygame.sprite.Group[Enemy] = pygame.sprite.Group(
             Enemy(spec.box, spec.speed_px_s if spec.speed_px_s is not None
-                  else self.tuning.enemy_speed_px_s)
+                  else self.tuning.enemy_speed_px_s, EnemyKind(spec.kind))
             for spec in self.level.enemies)
         self.coins: pygame.sprite.Group[Coin] = pygame.sprite.Group(
             Coin(spec.box, spec.value) for spec in self.level.coins)

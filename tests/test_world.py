@@ -257,3 +257,27 @@ def test_enemies_turn_at_walls_and_ledges() -> None:
     assert min(xs) >= 3 * 16 - 1e-9            # never walked off the left ledge
     assert max(xs) + enemy.box.w <= 11 * 16     # never walked into the wall on the right
     assert min(xs) < 4 * 16 and max(xs) > 9 * 16   # but did patrol the whole floor
+
+
+def test_a_hopper_patrols_in_hops_and_rests_between_them() -> None:
+    level = level_from_ascii([
+        "P                   ",
+        "                    ",
+        "                    ",
+        "          E         ",
+        "####################",
+    ])
+    spec = level.enemies[0]
+    level = Level(**{**level.__dict__, "enemies": (replace(spec, kind="hopper"),)})
+    world = World(level, replace(INSTANT, enemy_speed_px_s=60.0))
+    hopper = next(iter(world.enemies))
+    airborne, xs_on_ground = 0, set()
+    for _ in range(300):
+        world.step(NOTHING)
+        if hopper.on_ground:
+            xs_on_ground.add(hopper.box.x)
+        else:
+            airborne += 1
+    assert airborne > 60                          # it spends real time in the air
+    assert len(xs_on_ground) > 2                  # and lands somewhere new each hop
+    assert world.max_penetration_px == 0.0
