@@ -9,6 +9,9 @@ What it teaches:
     do not overlap. This is the rule ``pygame.Rect.colliderect`` uses, written with strict
     inequalities.
   * A box with zero width or height overlaps nothing, not even itself.
+  * Sizes are expected to be normalised (``w, h >= 0``): :meth:`Box.overlaps` counts a
+    negative size as empty, while ``pygame.Rect.colliderect`` flips it first. Use
+    :meth:`Box.normalized`, or :func:`rects_overlap`, to get pygame's answer for any sizes.
   * Positions are floats. pygame 2.6 ``Rect`` coordinates are integers, so a Rect cannot
     hold a body that moves 0.4 px per tick; the exact position lives here and the Rect is
     derived from it with ``math.floor`` (see :func:`Box.to_rect`).
@@ -22,6 +25,8 @@ True
 False
 >>> Box(10.4, -0.5, 12, 14).to_rect()
 <rect(10, -1, 12, 14)>
+>>> rects_overlap(Box(10, 10, -10, -10), Box(2, 2, 4, 4))   # pygame flips negative sizes
+True
 """
 
 from __future__ import annotations
@@ -30,6 +35,8 @@ import math
 from typing import NamedTuple
 
 import pygame
+
+RECT_MIN, RECT_MAX = -(2**31), 2**31 - 1  # what a pygame Rect's C ints can hold
 
 
 class Box(NamedTuple):
@@ -56,8 +63,42 @@ class Box(NamedTuple):
     def bottom(self) -> float:
         return self.y + self.h
 
+    @property
+    def center(self) -> tuple[float, float]:
+        """The exact middle, as floats (``Rect.center`` rounds it to whole pixels).
+
+        >>> Box(0, 0, 5, 3).center
+        (2.5, 1.5)
+        """
+        return (self.x + self.w / 2, self.y + self.h / 2)
+
+    @classmethod
+    def from_rect(cls, rect: pygame.Rect) -> Box:
+        """The box with the same four numbers as ``rect`` (negative sizes are kept as they are).
+
+        >>> Box.from_rect(pygame.Rect(3, 4, -5, 6))
+        Box(x=3, y=4, w=-5, h=6)
+        """
+        return cls(rect.x, rect.y, rect.w, rect.h)
+
+    def normalized(self) -> Box:
+        """The same region with a non-negative width and height, as pygame reads a Rect.
+
+        A width of -5 at ``x = 3`` covers ``-2 <= px < 3``: the corner moves, the size flips.
+
+        >>> Box(3, 4, -5, 6).normalized()
+        Box(x=-2, y=4, w=5, h=6)
+        """
+        x, w = (self.x + self.w, -self.w) if self.w < 0 else (self.x, self.w)
+        y, h = (self.y + self.h, -self.h) if self.h < 0 else (self.y, self.h)
+        return Box(x, y, w, h)
+
     def overlaps(self, other: Box) -> bool:
-        """True when the interiors intersect; touching edges and empty boxes never overlap."""
+        """True when the interiors intersect; touching edges and empty boxes never overlap.
+
+        Expects normalised boxes: a negative width or height counts as empty here. Call
+        :meth:`normalized` first (or use :func:`rects_overlap`) for pygame's flipping rule.
+        """
         return (
             self.w > 0
             and self.h > 0
@@ -112,9 +153,31 @@ class Box(NamedTuple):
         """The integer Rect that draws this box: ``floor`` of the corner, never ``int()``.
 
         ``int(-0.5)`` is ``0`` but the box starts half a pixel left of 0, so ``floor`` it is.
-        Refuses NaN and infinities, which pygame would silently turn into -2147483648.
+        Refuses NaN and infinities, which pygame would silently turn into -2147483648, and
+        edges beyond the 32-bit range of a Rect, which pygame would silently wrap round.
+
+        >>> Box(2.0**40, 0, 1, 1).to_rect()
+        Traceback (most recent call last):
+            ...
+        ValueError: cannot make a Rect from Box(x=1099511627776.0, y=0, w=1, h=1): an edge ...
         """
         if not self.is_finite():
             raise ValueError(f"cannot make a Rect from a non-finite box {self}")
-        return pygame.Rect(math.floor(self.x), math.floor(self.y),
-                           math.ceil(self.w), math.ceil(self.h))
+        edges = (math.floor(self.x), math.floor(self.y),
+                 math.floor(self.x) + math.ceil(self.w), math.floor(self.y) + math.ceil(self.h))
+        if any(not RECT_MIN <= edge <= RECT_MAX for edge in edges):
+            raise ValueError(f"cannot make a Rect from {self}: an edge lies outside "
+                             f"{RECT_MIN}..{RECT_MAX}, the range a pygame Rect can hold")
+        return pygame.Rect(edges[0], edges[1], math.ceil(self.w), math.ceil(self.h))
+
+
+def rects_overlap(a: Box, b: Box) -> bool:
+    """Overlap by ``pygame.Rect.colliderect``'s rule for any sizes: flip negative sizes, then
+    test strictly. Zero-size boxes still overlap nothing.
+
+    >>> rects_overlap(Box(0, 0, -10, 5), Box(-5, 0, 2, 5))
+    True
+    >>> Box(0, 0, -10, 5).overlaps(Box(-5, 0, 2, 5))             # not normalised: empty
+    False
+    """
+    return a.normalized().overlaps(b.normalized())

@@ -47,6 +47,8 @@ from game.player import Player
 from game.tilegrid import TileKind
 from game.tuning import Tuning
 
+SKY_LIMIT_PX = 1_000_000.0  # how far above the map a body may fly before the sky stops it
+
 
 class EventKind(Enum):
     COIN = "coin"
@@ -195,6 +197,11 @@ class World:
                 side, move = slid
                 run = body.last_x or side
                 body.last_x = Move(side.box, run.hit, run.swept.union(side.swept), run.start)
+        # Below the map is the void (a lost life) and far above it the sky ends, so a body
+        # flung at any speed keeps coordinates that a Rect can hold.
+        y = min(max(move.box.y, -SKY_LIMIT_PX), float(self.grid.height_px))
+        if y != move.box.y:
+            move = Move(move.box._replace(y=y), move.hit, move.swept, move.start)
         body.last_y = move
         body.place(move.box)
 

@@ -281,3 +281,13 @@ def test_a_hopper_patrols_in_hops_and_rests_between_them() -> None:
     assert airborne > 60                          # it spends real time in the air
     assert len(xs_on_ground) > 2                  # and lands somewhere new each hop
     assert world.max_penetration_px == 0.0
+
+
+def test_a_body_flung_at_absurd_speeds_keeps_a_rect_pygame_can_hold() -> None:
+    props: dict[str, object] = {"gravity": 1e15, "max_fall_speed": 1e14, "jump_speed": 1e14}
+    level = level_from_ascii(["P   ", "    ", "####"], props)
+    campaign = Campaign(Path("x.tmx"), INSTANT, loader=lambda _: level)
+    for tick in range(20):
+        campaign.tick(JUMP if tick % 4 == 0 else NOTHING)
+        assert campaign.world.player.box.is_finite()
+    assert campaign.world.max_penetration_px == 0.0
