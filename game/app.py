@@ -19,6 +19,7 @@ import argparse
 import json
 import sys
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -30,6 +31,7 @@ from game.inputs import NOTHING, Action, Actions, InputScript, InputScriptError,
 from game.level import Level
 from game.levels import FIRST_LEVEL, LevelError, load_level
 from game.report import Timing, build_report
+from game.world import Event
 
 HEADLESS_TICK_LIMIT = 60 * 60 * 60  # an hour of game time: a run with no --ticks still ends
 WINDOW_SCALE = 3                     # initial window size: the 320x180 view times this
@@ -45,10 +47,10 @@ KEYS: dict[Action, tuple[int, ...]] = {
 }
 
 
-def held_keys() -> Actions:
+def held_keys(bindings: Mapping[Action, tuple[int, ...]] = KEYS) -> Actions:
     """The actions whose keys are down right now."""
     pressed = pygame.key.get_pressed()
-    return frozenset(a for a, keys in KEYS.items() if any(pressed[k] for k in keys))
+    return frozenset(a for a, keys in bindings.items() if any(pressed[k] for k in keys))
 
 
 def level_label(path: Path) -> str:
@@ -76,13 +78,14 @@ class Run:
     recorder: Recorder = field(default_factory=Recorder)
     timing: Timing = field(default_factory=Timing)
 
-    def tick(self, keyboard: Actions = NOTHING) -> None:
+    def tick(self, keyboard: Actions = NOTHING) -> list[Event]:
         """One simulation tick with input from the script, else from the keyboard."""
         held = self.script.held_at(self.campaign.ticks) if self.script else keyboard
         self.recorder.observe(self.campaign.ticks, held)
         started = time.perf_counter()
-        self.campaign.tick(held)
+        events = self.campaign.tick(held)
         self.timing.add(time.perf_counter() - started, self.campaign.world.stats.collision_s)
+        return events
 
     def finished(self) -> bool:
         ticks = self.args.ticks

@@ -14,7 +14,6 @@ This (re)writes, in ``assets/`` next to the ``game`` package:
 * ``tiles.png`` and ``tiles.tsx``: the 16x16 tileset and its Tiled tileset file
 * ``player.png``, ``enemy.png``, ``coin.png``: horizontal sprite-sheet strips
 * ``exit.png``, ``heart.png``, ``background.png``: single images
-* ``README.md``: the list of files, their layouts and the licence
 
 No display is needed: everything is drawn on off-screen ``SRCALPHA`` surfaces.
 The output is deterministic (noise comes from fixed-seed generators).
@@ -1265,77 +1264,8 @@ def draw_background() -> pygame.Surface:
 
 
 # --------------------------------------------------------------------------
-# README and entry point
+# Entry point
 # --------------------------------------------------------------------------
-
-README = f"""\
-# Game assets
-
-Every file in this folder is drawn procedurally by `python -m game.art`
-(`game/art.py`); no third-party art is used. All assets are the project's own
-work and are released under **CC0 1.0 Universal (public domain dedication)**:
-<https://creativecommons.org/publicdomain/zero/1.0/>.
-
-To regenerate them (output is deterministic), run from the repository root:
-
-```
-python -m game.art
-```
-
-Do not edit the PNGs by hand: change `game/art.py` and regenerate.
-
-## Files
-
-| File | Size | Contents |
-| --- | --- | --- |
-| `tiles.png` | 128x64 | tileset, 8 columns x 4 rows of 16x16 tiles (ids below) |
-| `tiles.tsx` | | Tiled 1.8 external tileset for `tiles.png` (tile classes, spike hitbox) |
-| `player.png` | 128x16 | hero, 8 frames of 16x16, facing right |
-| `enemy.png` | 80x16 | enemies, 5 frames of 16x16, facing right |
-| `coin.png` | 32x8 | spinning coin, 4 frames of 8x8 (frame 0 doubles as the HUD icon) |
-| `exit.png` | 16x32 | goal flag on a pole |
-| `heart.png` | 8x8 | HUD life |
-| `background.png` | 320x180 | opaque parallax sky; tiles horizontally |
-
-## Tile ids (`tiles.png`, id = row * 8 + column)
-
-| Id | Tile | Class |
-| --- | --- | --- |
-| 0 | grass-topped ground | Solid |
-| 1 | dirt fill | Solid |
-| 2 | stone bricks | Solid |
-| 3 | grass ground, left end | Solid |
-| 4 | grass ground, right end | Solid |
-| 5 | wooden one-way plank (top {PLANK_HEIGHT} px) | OneWay |
-| 6 | silver spikes (collision box x=1 y=8 w=14 h=8) | Hazard |
-| 7 | steel crate | Solid |
-| 8 | bush | decor |
-| 9 | red flower | decor |
-| 10, 11 | cloud, left and right half | decor |
-| 12 | grass tuft | decor |
-| 13 | signpost pointing right | decor |
-| 14 | dark brick wall (background layer) | decor |
-| 15 | dark dirt (background layer) | decor |
-| 16 | boulder | decor |
-| 17 | mushroom | decor |
-| 18 | fence (repeats horizontally) | decor |
-| 19 | blue flower | decor |
-| 20 | pebbles | decor |
-| 21 | tall grass | decor |
-| 22-31 | empty (transparent) | |
-
-Decor tiles have no class in `tiles.tsx`.
-
-## Sprite strips (frames left to right)
-
-- `player.png`: 0-1 idle (breathing), 2-5 run, 6 jump (rising), 7 fall.
-  The body fills about x 2..14, y 2..16 of each frame (bottom-centre anchored
-  12x14 hitbox). Drawn facing right; flip for left.
-- `enemy.png`: 0-1 slime walker walking, 2 slime squashed (stomped),
-  3 spring-frog hopper crouching, 4 spring-frog hopper jumping.
-- `coin.png`: full face, narrow, edge-on, narrow (mirrored).
-"""
-
 
 # Every image this module writes, with the size the game code expects.
 IMAGES: dict[str, tuple[Callable[[], pygame.Surface], tuple[int, int]]] = {
@@ -1358,8 +1288,7 @@ def main() -> None:
             raise RuntimeError(f"{name} is {surface.get_size()}, expected {size}")
         pygame.image.save(surface, str(ASSETS / name))
     (ASSETS / "tiles.tsx").write_text(tileset_tsx(), encoding="utf-8")
-    (ASSETS / "README.md").write_text(README, encoding="utf-8")
-    print(f"wrote {len(IMAGES) + 2} files to {ASSETS}")
+    print(f"wrote {len(IMAGES) + 1} files to {ASSETS} (the credits are in assets/README.md)")
 
 
 if __name__ == "__main__":

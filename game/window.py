@@ -17,12 +17,14 @@ import pygame
 
 from game.app import EXIT_OK, TARGET_FPS, Run, held_keys
 from game.assets import Assets, load_assets
+from game.audio import Audio
 from game.campaign import Campaign, Outcome
 from game.debug_overlay import draw_debug
 from game.hud import draw_hud
 from game.levels import LevelError
 from game.loop import FixedStep
 from game.render import draw_world
+from game.saves import Attempt, Progress, progress_file
 from game.screens import (
     PAUSE_ITEMS,
     draw_error_banner,
@@ -31,6 +33,7 @@ from game.screens import (
     draw_title,
     draw_win,
 )
+from game.settings import Settings, settings_file
 from game.watch import FileWatcher
 
 CONFIRM_KEYS = (pygame.K_RETURN, pygame.K_KP_ENTER, pygame.K_SPACE)
@@ -69,6 +72,20 @@ def play_in_window(run: Run) -> int:
     first_level = run.campaign.world.level.path
     watcher: FileWatcher | None = None
     reload_error: str | None = None
+    # The player's own files, read only when a person plays (never a scripted or timed run).
+    personal = not scripted and run.args.ticks is None
+    settings_store, progress_store = settings_file(), progress_file()
+    settings, progress, notice = Settings(), Progress(), None
+    if personal:
+        settings, settings_problem = settings_store.load(Settings.from_json, Settings)
+        progress, progress_problem = progress_store.load(Progress.from_json, Progress)
+        notice = settings_problem or progress_problem
+    keys = settings.key_codes()
+    if settings.fullscreen:
+        pygame.display.toggle_fullscreen()
+    audio = Audio()  # silent, without a word, when there is no sound card
+    audio.set_volume(settings.effects_volume, settings.music_volume)
+    attempt = Attempt()
     while True:
         frame_s = clock.tick(TARGET_FPS) / 1000.0
         frame += 1
@@ -83,12 +100,17 @@ def play_in_window(run: Run) -> int:
                 debug = not debug
             elif event.key == pygame.K_F11:
                 pygame.display.toggle_fullscreen()
+                settings.fullscreen = not settings.fullscreen
+                if personal:
+                    notice = settings_store.save(settings.to_json()) or notice
             elif screen is Screen.TITLE and event.key in CONFIRM_KEYS:
+                audio.play("menu")
                 run.campaign = Campaign(first_level, run.campaign.tuning, run.campaign.loader)
                 screen = Screen.PLAYING
             elif screen is Screen.PLAYING and event.key in PAUSE_KEYS:
                 screen, selected = Screen.PAUSED, 0
             elif screen is Screen.PAUSED:
+                audio.play("menu")
                 if event.key in PAUSE_KEYS:
                     screen = Screen.PLAYING
                 elif event.key in (pygame.K_UP, pygame.K_w):
@@ -112,10 +134,26 @@ def play_in_window(run: Run) -> int:
                 except LevelError as error:
                     reload_error = str(error)
 
-        # 2. Ticks: as many fixed 1/60 s steps as real time has paid for.
+        # Music plays while playing, holds its place while paused, stops elsewhere.
+        if screen is Screen.PLAYING:
+            audio.start_music()
+        elif screen is Screen.PAUSED:
+            audio.pause_music()
+        else:
+            audio.stop_music()
+
+        # 2. Ticks: as many fixed 1/60 s steps as real time has paid for; each tick's events
+        # sound, and a finished level is saved at once.
         if screen is Screen.PLAYING:
             for _ in range(stepper.advance(frame_s)):
-                run.tick(held_keys())
+                attempt.before_tick(run.campaign)
+                events = run.tick(held_keys(keys))
+                for tick_event in events:
+                    audio.play(tick_event.kind)
+                finish = attempt.after_tick(run.campaign, events)
+                if finish is not None and personal:
+                    progress.record(finish)
+                    notice = progress_store.save(progress.to_json()) or notice
                 if run.finished():
                     break
             if run.finished():
@@ -131,6 +169,8 @@ def play_in_window(run: Run) -> int:
                               fps=clock.get_fps(), update_ms=_last_update_ms(run))
         if reload_error is not None:
             draw_error_banner(target, assets, reload_error)
+        elif notice is not None and screen is not Screen.PLAYING:
+            draw_error_banner(target, assets, notice)
         if screen is Screen.TITLE:
             draw_title(target, assets, frame)
         elif screen is Screen.PAUSED:
