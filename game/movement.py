@@ -191,3 +191,35 @@ def penetration_depth(grid: TileGrid, box: Box) -> float:
     """How deep the box sits inside any solid shape: 0.0 after a correct resolution."""
     return max((box.penetration(s.box) for s in touching(grid, box, TileKind.SOLID)),
                default=0.0)
+
+
+def nearest_free_place(grid: TileGrid, box: Box, search_px: float = 64.0) -> Box:
+    """The closest position to ``box`` where it overlaps no solid: a spawn inside a wall.
+
+    Around axis-aligned walls the nearest free position has each coordinate either where it
+    was or flush with some wall face, so only those combinations are tried; the window grows
+    until one is free. Ties go to the higher, then the more left, position.
+
+    >>> from game.tilegrid import TileGrid, TileShape, TileKind
+    >>> grid = TileGrid(cols=10, rows=10, tile_w=16, tile_h=16)
+    >>> for col in range(10):
+    ...     grid.put(col, 5, TileShape(Box(col * 16, 80, 16, 16), TileKind.SOLID))
+    >>> nearest_free_place(grid, Box(40, 70, 12, 14))    # sunk 4 px into a floor: up it goes
+    Box(x=40, y=66, w=12, h=14)
+    """
+    if penetration_depth(grid, box) == 0.0:
+        return box
+    limit = max(grid.width_px, grid.height_px) + box.w + box.h
+    while True:
+        window = Box(box.x - search_px, box.y - search_px,
+                     box.w + 2 * search_px, box.h + 2 * search_px)
+        solids = touching(grid, window, TileKind.SOLID)
+        xs = {box.x} | {s.box.left - box.w for s in solids} | {s.box.right for s in solids}
+        ys = {box.y} | {s.box.top - box.h for s in solids} | {s.box.bottom for s in solids}
+        free = [box._replace(x=x, y=y) for x in xs for y in ys
+                if penetration_depth(grid, box._replace(x=x, y=y)) == 0.0]
+        if free:
+            return min(free, key=lambda b: ((b.x - box.x) ** 2 + (b.y - box.y) ** 2, b.y, b.x))
+        if search_px > limit:
+            return box._replace(y=-box.h)  # a map solid everywhere: stand on top of it
+        search_px *= 2

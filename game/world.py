@@ -10,10 +10,13 @@ The order of a tick, pinned by ``tests/test_world.py``:
 2. **x pass**: every body moves along x, swept against the tile grid, stopping flush.
 3. **y pass**: every body moves along y the same way; the 1-pixel probe sets ``on_ground``.
 4. **React**: bodies read what their moves hit (land, bump, turn round).
-5. **Pickups**: coins by ``groupcollide`` with ``dokill``; the exit by ``spritecollideany``.
-6. **Enemies**: a touch from above is a stomp, any other touch hurts.
-7. **Hazards and the void**: spikes and falling below the map hurt; the player respawns.
-8. **Camera**: follows the player.
+5. **Pickups**: coins by ``groupcollide`` with ``dokill``, on the path the player travelled.
+6. **Contacts**: the pairs the player touches; a tracker turns them into start/end events
+   (entering the exit completes the level).
+7. **Enemies and hazards**: a touch from above is a stomp, any other touch hurts, and so do
+   spikes, for as long as they are touched.
+8. **The void**: falling below the map costs a life; the player respawns at the spawn.
+9. **Camera**: follows the player.
 
 Solids never go through ``groupcollide``: walls only meet bodies in the movement code.
 """
@@ -29,6 +32,7 @@ import pygame
 from game.aabb import Box
 from game.body import Body
 from game.camera import Camera
+from game.contacts import ContactTracker
 from game.enemy import Enemy, EnemyKind
 from game.inputs import Actions
 from game.level import Level
@@ -38,6 +42,7 @@ from game.movement import (
     ground_under,
     move_x,
     move_y,
+    nearest_free_place,
     penetration_depth,
     slide_past_ceiling_corner,
     touching,
@@ -48,6 +53,10 @@ from game.tilegrid import TileKind
 from game.tuning import Tuning
 
 SKY_LIMIT_PX = 1_000_000.0  # how far above the map a body may fly before the sky stops it
+
+
+ContactKey = tuple[str, int]  # ("player", 0), ("enemy", 3), ("exit", 0), ("hazard", cell)
+PLAYER_KEY: ContactKey = ("player", 0)
 
 
 class EventKind(Enum):
@@ -92,16 +101,21 @@ class World:
     def __post_init__(self) -> None:
         self.tuning = self.tuning.with_map_properties(self.level.properties)
         self.grid = self.level.grid
-        self.player = Player(self.level.spawn, self.tuning)
+        # A spawn drawn inside a wall is moved to the nearest free place before play starts.
+        self.spawn = nearest_free_place(self.grid, self.level.spawn)
+        self.player = Player(self.spawn, self.tuning)
         self.players: pygame.sprite.GroupSingle[Player] = pygame.sprite.GroupSingle(self.player)
         self.enemies: pygame.sprite.Group[Enemy] = pygame.sprite.Group(
-            Enemy(spec.box, spec.speed_px_s if spec.speed_px_s is not None
+            Enemy(nearest_free_place(self.grid, spec.box),
+                  spec.speed_px_s if spec.speed_px_s is not None
                   else self.tuning.enemy_speed_px_s, EnemyKind(spec.kind))
             for spec in self.level.enemies)
         self.coins: pygame.sprite.Group[Coin] = pygame.sprite.Group(
             Coin(spec.box, spec.value) for spec in self.level.coins)
         self.exits: pygame.sprite.Group[Exit] = pygame.sprite.Group(
             Exit(box) for box in self.level.exits)
+        self.enemy_by_number = dict(enumerate(self.enemies))
+        self.contacts: ContactTracker[ContactKey] = ContactTracker()
         self.stats = TickStats()
         self.max_penetration_px = 0.0
         self.player.standing_on = ground_under(self.grid, self.player.box)
@@ -148,25 +162,31 @@ class World:
         for coins in pygame.sprite.groupcollide(
                 self.players, self.coins, False, True, collided=crossed).values():
             events.extend(Event(EventKind.COIN, coin.value, coin.box) for coin in coins)
-        if pygame.sprite.spritecollideany(self.player, self.exits, collided=crossed):
+
+        # 6. Contacts: what the player touches now. The tracker reports only what changed,
+        #    so entering the exit is one event however long the player stands in it.
+        touching_now = self._player_contacts()
+        changes = self.contacts.update(touching_now)
+        if any(kind == "exit" for pair in changes.started for kind, _ in pair):
             events.append(Event(EventKind.EXIT))
 
-        # 6. Enemies: landing on top is a stomp; any other touch hurts.
+        # 7. Enemies: landing on top is a stomp; any other touch hurts. Spikes hurt for as
+        #    long as they are touched (not only on contact), so standing in them when the
+        #    invulnerability runs out still costs a life.
         hurt = False
-        for enemy in pygame.sprite.spritecollide(self.player, self.enemies, False,
-                                                 collided=crossed):
-            if self._came_from_above(before[self.player], before[enemy]):
-                enemy.kill()
-                self.player.bounce(self.tuning.stomp_bounce_px_s)
-                events.append(Event(EventKind.STOMP, 1, enemy.box))
-            elif not self.player.invulnerable:
+        for _, (kind, number) in sorted(touching_now):
+            if kind == "enemy":
+                enemy = self.enemy_by_number[number]
+                if self._came_from_above(before[self.player], before[enemy]):
+                    enemy.kill()
+                    self.player.bounce(self.tuning.stomp_bounce_px_s)
+                    events.append(Event(EventKind.STOMP, 1, enemy.box))
+                elif not self.player.invulnerable:
+                    hurt = True
+            elif kind == "hazard" and not self.player.invulnerable:
                 hurt = True
 
-        # 7. Hazards and the void: spikes and falling below the map cost a life.
-        moves = (self.player.last_x, self.player.last_y)
-        if not self.player.invulnerable and any(
-                m and touching(self.grid, m.path, TileKind.HAZARD) for m in moves):
-            hurt = True
+        # 8. The void: falling below the map costs a life (and removes a falling enemy).
         if self.player.box.top >= self.grid.height_px:
             hurt = True
         for enemy in self.enemies:
@@ -174,7 +194,7 @@ class World:
                 enemy.kill()
         if hurt and not any(e.kind is EventKind.EXIT for e in events):
             events.append(Event(EventKind.HURT, 1, self.player.box))
-            self.player.respawn(self.level.spawn, self.tuning.invulnerable_ticks)
+            self.player.respawn(self.spawn, self.tuning.invulnerable_ticks)
 
         self.stats = TickStats(self.grid.stats.cells_visited, self.grid.stats.shapes_tested,
                                time.perf_counter() - started)
@@ -183,9 +203,22 @@ class World:
             self.max_penetration_px = max(self.max_penetration_px,
                                           penetration_depth(self.grid, body.box))
 
-        # 8. Camera: follow the player, inside the map.
+        # 9. Camera: follow the player, inside the map.
         self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
         return events
+
+    def _player_contacts(self) -> set[tuple[ContactKey, ContactKey]]:
+        """The pairs (player, thing) whose boxes the player's path overlapped this tick."""
+        player = self.player
+        pairs = {(PLAYER_KEY, ("exit", number)) for number, goal in enumerate(self.exits)
+                 if crossed(player, goal)}
+        pairs |= {(PLAYER_KEY, ("enemy", number)) for number, enemy in
+                  self.enemy_by_number.items() if enemy.alive() and crossed(player, enemy)}
+        for move in (player.last_x, player.last_y):
+            if move is not None:
+                pairs |= {(PLAYER_KEY, ("hazard", shape.row * self.grid.cols + shape.col))
+                          for shape in touching(self.grid, move.path, TileKind.HAZARD)}
+        return pairs
 
     def _move_y(self, body: Body, dy: float) -> None:
         """The y pass for one body, with corner correction for a rise that clips a ceiling."""

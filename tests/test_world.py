@@ -291,3 +291,23 @@ def test_a_body_flung_at_absurd_speeds_keeps_a_rect_pygame_can_hold() -> None:
         campaign.tick(JUMP if tick % 4 == 0 else NOTHING)
         assert campaign.world.player.box.is_finite()
     assert campaign.world.max_penetration_px == 0.0
+
+
+def test_a_player_spawned_inside_a_wall_is_pushed_out_to_the_nearest_free_place() -> None:
+    level = level_from_ascii(["        ", "   ##   ", "   ##   ", "########"],
+                             spawn=Box(66, 20, 12, 14))   # 2 px in from the block's right
+    world = World(level, INSTANT)
+    assert world.player.box == Box(80, 20, 12, 14)        # out through the nearest face
+    assert world.max_penetration_px == 0.0
+    world.step(NOTHING)
+    assert world.max_penetration_px == 0.0
+
+
+def test_a_respawn_uses_the_freed_spawn_too() -> None:
+    level = level_from_ascii(["P       ", "#       ", "        "], spawn=Box(2, 10, 12, 14))
+    campaign = Campaign(Path("x.tmx"), INSTANT, loader=lambda _: level)
+    free_spawn = campaign.world.player.box
+    assert free_spawn.bottom == 16
+    while not campaign.deaths:
+        campaign.tick(RIGHT)
+    assert campaign.world.player.box == free_spawn
