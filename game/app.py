@@ -153,6 +153,7 @@ def run_headless(game_run: Run) -> int:
     if game_run.args.screenshot:
         from game.window import render_frame
 
-        frame = render_frame(game_run.campaign, debug=game_run.args.debug)
+        last_ms = game_run.timing.update_s[-1] * 1000.0 if game_run.timing.update_s else 0.0
+        frame = render_frame(game_run.campaign, debug=game_run.args.debug, update_ms=last_ms)
     game_run.write_outputs(frame)
     return EXIT_OK

@@ -26,10 +26,11 @@ import pygame
 from game.aabb import Box
 from game.assets import Assets
 from game.camera import Camera
+from game.contacts import Change, ContactEvent
 from game.hud import HUD_BAR_H_PX, SMALL_TEXT_ANTIALIAS, Color, draw_text
 from game.movement import Move, Side
 from game.tilegrid import TileGrid, TileKind
-from game.world import World
+from game.world import PLAYER_KEY, ContactKey, World
 
 PLAYER_COLOR: Color = (80, 255, 96)
 ENEMY_COLOR: Color = (255, 64, 64)
@@ -57,6 +58,7 @@ PANEL_TEXT: Color = (230, 236, 255)
 PANEL_PAD_PX = 3
 PANEL_GAP_PX = 2  # between the HUD bar and the panel
 MS_PER_S = 1000.0
+CONTACT_LINES = 3  # the last few contact starts and ends, from the world's tracker
 
 
 def _screen_rect(box: Box, camera: Camera) -> pygame.Rect:
@@ -75,7 +77,7 @@ def _near_cells(grid: TileGrid, boxes: list[Box]) -> set[tuple[int, int]]:
 
 def _draw_checked_shapes(wash: pygame.Surface, world: World) -> list[tuple[Color, pygame.Rect]]:
     """Wash the tile shapes in the cells around each body and return their outlines to draw
-    (read-only: the cells are read through ``shapes()``, never ``shapes_in``)."""
+    (read-only: the cells are read through ``shapes_at``, never ``shapes_in``)."""
     grid, camera = world.grid, world.camera
     view = camera.view()
     boxes = [body.box for body in world.bodies() if body.box.is_finite()]
@@ -83,10 +85,7 @@ def _draw_checked_shapes(wash: pygame.Surface, world: World) -> list[tuple[Color
     outlines: list[tuple[Color, pygame.Rect]] = []
     if not cells:
         return outlines
-    for shape in grid.shapes():
-        cell = (math.floor(shape.box.x / grid.tile_w), math.floor(shape.box.y / grid.tile_h))
-        if cell not in cells:
-            continue
+    for shape in (s for cell in sorted(cells) for s in grid.shapes_at(*cell)):
         rect = _screen_rect(shape.box, camera)
         color = SHAPE_COLORS[shape.kind]
         wash.fill((*color[:3], SHAPE_FILL_ALPHA), rect)
@@ -126,16 +125,26 @@ def _draw_outlines(target: pygame.Surface, world: World) -> None:
     pygame.draw.rect(target, PLAYER_COLOR, _screen_rect(world.player.box, camera), width=1)
 
 
+def _contact_line(event: ContactEvent[ContactKey]) -> str:
+    """``tick 307 +enemy 0``: a contact starting (+) or ending (-) with the player."""
+    sign = "+" if event.change is Change.STARTED else "-"
+    other = next((key for key in event.pair if key != PLAYER_KEY), event.pair[0])
+    return f"tick {event.tick} {sign}{other[0]} {other[1]}"
+
+
 def _draw_panel(target: pygame.Surface, world: World, assets: Assets, fps: float,
                 update_ms: float) -> None:
     player, stats = world.player, world.stats
+    ground = "ground" if player.on_ground else "air"
     lines = (
-        f"FPS {fps:5.1f}   update {update_ms:5.2f} ms",
-        f"checks: {stats.shapes_tested} shapes in {stats.cells_visited} cells",
-        f"collision {stats.collision_s * MS_PER_S:5.3f} ms",
-        f"x {player.box.x:7.2f}  y {player.box.y:7.2f}",
-        f"vx {player.vx:6.1f}  vy {player.vy:6.1f}",
-        f"on_ground {player.on_ground}",
+        f"FPS {fps:4.1f}  tick {update_ms:4.2f} ms",
+        f"collide {stats.collision_s * MS_PER_S:4.2f} ms",
+        f"{stats.shapes_tested} shapes in {stats.cells_visited} cells",
+        f"x {player.box.x:.1f} y {player.box.y:.1f} {ground}",
+        f"vx {player.vx:.0f} vy {player.vy:.0f}",
+        "walls: tile grid + sweeps",
+        f"enemies: brute force x{len(world.enemies)}",
+        *(_contact_line(event) for event in list(world.contacts.log)[-CONTACT_LINES:]),
     )
     font = assets.small_font
     line_h = font.get_linesize()

@@ -92,6 +92,10 @@ class TileGrid:
         for bucket in self._cells.values():
             yield from bucket
 
+    def shapes_at(self, col: int, row: int) -> tuple[TileShape, ...]:
+        """The shapes of one cell, read without counting (for drawing, never for physics)."""
+        return tuple(self._cells.get((col, row), ()))
+
     def cells_covering(self, region: Box) -> Iterator[tuple[int, int]]:
         """The in-map cells whose interior the region overlaps, row by row."""
         if not region.is_finite() or region.w <= 0 or region.h <= 0:
