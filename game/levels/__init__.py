@@ -1,16 +1,20 @@
-"""Levels: the shipped campaign and the loader that turns Tiled maps into playable levels.
+"""Levels: the shipped campaign, and the loader that turns Tiled maps into playable levels.
 
-``python -m game.levels check PATH...`` checks maps the way the game loads them.
+``load_level(path)`` reads a map for the game; ``check_level(path)`` lists everything wrong
+with one. ``python -m game.levels check PATH...`` prints those findings, and
+``python -m game.levels types --write`` regenerates the Tiled project's class definitions
+(see ``levels/README.md``, the level designer's guide).
 """
 
 from __future__ import annotations
 
 from pathlib import Path
 
-from game.levels.errors import LevelError
-from game.levels.loader import load_level
+from game.levels.errors import Findings, LevelError, LevelWarning
+from game.levels.loader import check_level, load_level
 
 LEVELS_DIR = Path(__file__).resolve().parent.parent.parent / "levels"
 FIRST_LEVEL = LEVELS_DIR / "01-first-steps.tmx"
 
-__all__ = ["FIRST_LEVEL", "LEVELS_DIR", "LevelError", "load_level"]
+__all__ = ["FIRST_LEVEL", "LEVELS_DIR", "Findings", "LevelError", "LevelWarning",
+           "check_level", "load_level"]

@@ -1,8 +1,44 @@
-"""The one error a level designer ever sees: file, place, what is wrong, how to fix it."""
+"""The one error a level designer ever sees: file, place, what is wrong, how to fix it.
+
+Where it sits: every reader in :mod:`game.levels` reports through a :class:`Findings`, so a
+problem found anywhere, in the map, a tileset or a template, comes out in the same form.
+
+What it teaches:
+  * **Errors are for people.** A message is one sentence in the contract's form,
+    ``PATH: place: message — how to fix``, and the fix is said in Tiled's own words.
+  * **Fatal or not.** Some problems stop the reading at once (a map that is not XML);
+    others are recorded and the reading carries on, so the checker can list every broken
+    object in one run instead of one per run. Warnings never stop anything.
+
+>>> findings = Findings(Path("a.tmx"))
+>>> findings.warn("object #4 'sign'", "class 'Sign' means nothing", "use Coin or Exit")
+>>> findings.error("object #3 'Hero'", "2 Player objects", "delete one")
+>>> findings.error("", "this map has no Exit", "draw one with the Rectangle tool")
+>>> for line in findings.lines():
+...     print(line)
+a.tmx: object #4 'sign': warning: class 'Sign' means nothing — use Coin or Exit
+a.tmx: object #3 'Hero': 2 Player objects — delete one
+a.tmx: this map has no Exit — draw one with the Rectangle tool
+>>> findings.raise_errors()
+Traceback (most recent call last):
+    ...
+game.levels.errors.LevelError: a.tmx: object #3 'Hero': 2 Player objects — delete one
+"""
 
 from __future__ import annotations
 
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
 from pathlib import Path
+from typing import NoReturn
+
+MAX_ERRORS_PER_MAP = 20  # past this many, the rest of the map is not worth reading
+
+
+def _sentence(path: Path | str, where: str, problem: str, fix: str, warning: bool) -> str:
+    place = f"{where}: " if where else ""
+    label = "warning: " if warning else ""
+    return f"{path}: {place}{label}{problem} — {fix}"
 
 
 class LevelError(Exception):
@@ -12,15 +48,74 @@ class LevelError(Exception):
 
         PATH: [layer 'NAME' | object #ID 'NAME' | tile (X,Y)]: message — how to fix
 
+    ``others`` holds the further errors found in the same map, for the checker to list.
+
     >>> print(LevelError(Path("a.tmx"), "object #3 'Hero'", "two Player objects",
     ...                  "delete one of them in Tiled"))
     a.tmx: object #3 'Hero': two Player objects — delete one of them in Tiled
     """
 
-    def __init__(self, path: Path | str, where: str, problem: str, fix: str) -> None:
+    def __init__(self, path: Path | str, where: str, problem: str, fix: str,
+                 others: Sequence[LevelError] = ()) -> None:
         self.path = Path(path)
         self.where = where
         self.problem = problem
         self.fix = fix
-        place = f"{where}: " if where else ""
-        super().__init__(f"{path}: {place}{problem} — {fix}")
+        self.others = tuple(others)
+        super().__init__(_sentence(path, where, problem, fix, warning=False))
+
+    def all_errors(self) -> tuple[LevelError, ...]:
+        """This error and the others found with it, in the order they were found."""
+        return (self, *self.others)
+
+
+@dataclass(frozen=True)
+class LevelWarning:
+    """Something the game can play around, but the designer should know about."""
+
+    path: Path
+    where: str
+    problem: str
+    fix: str
+
+    def __str__(self) -> str:
+        return _sentence(self.path, self.where, self.problem, self.fix, warning=True)
+
+
+class Findings:
+    """What reading one map found: warnings, and errors that need not stop the reading."""
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        self.warnings: list[LevelWarning] = []
+        self.errors: list[LevelError] = []
+
+    def warn(self, where: str, problem: str, fix: str) -> None:
+        """Note something the game plays around (the checker prints it; exit status 0)."""
+        self.warnings.append(LevelWarning(self.path, where, problem, fix))
+
+    def error(self, where: str, problem: str, fix: str) -> None:
+        """Note a problem that makes the map unplayable, and carry on reading."""
+        self.errors.append(LevelError(self.path, where, problem, fix))
+        if len(self.errors) >= MAX_ERRORS_PER_MAP:
+            self.fail("", f"{MAX_ERRORS_PER_MAP} problems found; the rest were not checked",
+                      "fix these first, then check the map again")
+
+    def fail(self, where: str, problem: str, fix: str) -> NoReturn:
+        """Stop reading: nothing after this problem can be trusted."""
+        self.errors.append(LevelError(self.path, where, problem, fix))
+        self.raise_errors()
+        raise AssertionError("unreachable")  # pragma: no cover
+
+    def raise_errors(self) -> None:
+        """Raise the first error found, carrying the others; do nothing if there are none."""
+        if self.errors:
+            first, *others = self.errors
+            raise LevelError(first.path, first.where, first.problem, first.fix, others)
+
+    def lines(self) -> Iterator[str]:
+        """Every finding as the checker prints it: warnings first, then errors."""
+        for warning in self.warnings:
+            yield str(warning)
+        for error in self.errors:
+            yield str(error)

@@ -1,0 +1,71 @@
+"""Read numbers from XML attributes, refusing junk, NaN and infinity with a sentence.
+
+Where it sits: under every reader in :mod:`game.levels`. A Tiled file is text; a hand edit,
+a merge conflict or another tool can leave ``x="nan"``, ``width="1e400"`` or ``id="3.5"``
+in it, and Python's ``float()`` accepts the first two without complaint.
+
+What it teaches: parse once, at the edge, into the type the game needs (a finite float, a
+whole number within limits), and say which attribute was wrong and where.
+
+>>> from pathlib import Path
+>>> from game.levels.errors import Findings
+>>> findings = Findings(Path("a.tmx"))
+>>> number({"x": "12.5"}, "x", findings, "object #1 ''")
+12.5
+>>> whole({}, "spacing", findings, "tileset 't'", default=0)
+0
+>>> number({"x": "nan"}, "x", findings, "object #1 ''")
+Traceback (most recent call last):
+    ...
+game.levels.errors.LevelError: a.tmx: object #1 '': x is 'nan', not a finite number — \
+move or resize it in Tiled, or type an ordinary number in its Properties
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+from game.levels.errors import Findings
+
+FIX_NUMBER = "move or resize it in Tiled, or type an ordinary number in its Properties"
+
+
+def parse_number(text: str) -> float | None:
+    """``text`` as a finite float, or None.
+
+    >>> parse_number(" 3 "), parse_number("inf"), parse_number("1e400"), parse_number("x")
+    (3.0, None, None, None)
+    """
+    try:
+        value = float(text)
+    except ValueError:
+        return None
+    return value if math.isfinite(value) else None
+
+
+def number(attributes: Mapping[str, str], name: str, findings: Findings, where: str,
+           default: float | None = None) -> float:
+    """Attribute ``name`` as a finite float; ``default`` when absent (None: it is required)."""
+    text = attributes.get(name)
+    if text is None:
+        if default is None:
+            findings.fail(where, f"the {name} attribute is missing",
+                          "open the file in Tiled and save it again")
+        return default
+    value = parse_number(text)
+    if value is None:
+        findings.fail(where, f"{name} is {text!r}, not a finite number", FIX_NUMBER)
+    return value
+
+
+def whole(attributes: Mapping[str, str], name: str, findings: Findings, where: str,
+          default: int | None = None, low: int = 0, high: int = 2**31 - 1) -> int:
+    """Attribute ``name`` as a whole number in ``low..high``; ``default`` when absent."""
+    value = number(attributes, name, findings, where,
+                   None if default is None else float(default))
+    if value != int(value) or not low <= value <= high:
+        findings.fail(where, f"{name} is {attributes.get(name)!r}, not a whole number "
+                      f"from {low} to {high}",
+                      "open the file in Tiled and save it again, or undo the hand edit")
+    return int(value)

@@ -1,0 +1,168 @@
+"""The game's Tiled classes: one list that the loader, Tiled and the docs all read.
+
+Where it sits: :mod:`game.levels.entities` applies these defaults and checks these types
+when it turns objects into coins and enemies; :mod:`game.levels.project` writes the same
+list into ``levels/tile-hopper.tiled-project`` (and the files Tiled 1.8 and pytmx read), so
+the defaults a designer sees in Tiled are the ones the game uses.
+
+What it teaches: keep one source of truth and generate the rest. Numbers that belong to the
+game's feel (the enemies' patrol speed, gravity) come from :class:`game.tuning.Tuning`.
+
+>>> CLASSES_BY_NAME["coin"].defaults()
+{'value': 1}
+>>> find("ENEMY").defaults()["speed"] == Tuning().enemy_speed_px_s
+True
+>>> CLASSES_BY_NAME["coin"].member("value").coerce("7")
+7
+>>> CLASSES_BY_NAME["coin"].member("value").coerce(2.5)
+Traceback (most recent call last):
+    ...
+ValueError: 2.5 is not a whole number
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+from game.enemy import EnemyKind
+from game.levels.attributes import parse_number
+from game.tilegrid import TileKind
+from game.tuning import Tuning
+
+MemberType = Literal["int", "float", "string", "bool", "file"]
+UseAs = Literal["object", "tile", "map"]
+Plain = int | float | str | bool
+
+MAX_SPEED_PX_S = 1_000_000.0  # also px/s² for gravity: past this a tick is a teleport
+MAX_COIN_VALUE = 1_000_000
+WHAT_TYPE = {"int": "a whole number", "float": "a number", "string": "text",
+             "bool": "true or false", "file": "a file"}
+
+
+def _plain(number: float) -> str:
+    return f"{int(number):,}" if number == int(number) else f"{number:g}"
+
+
+@dataclass(frozen=True)
+class Member:
+    """One property of a class: its name, type, default, allowed range and meaning."""
+
+    name: str
+    type: MemberType
+    default: Plain
+    doc: str
+    low: float | None = None
+    high: float | None = None
+    choices: tuple[str, ...] = ()  # a string member that takes one of these (a Tiled enum)
+
+    @property
+    def expected(self) -> str:
+        """What a value must be, in words.
+
+        >>> speed("speed", 30.0, "patrol speed in px/s").expected
+        'a number from 0 to 1,000,000'
+        """
+        if self.choices:
+            return f"one of {', '.join(self.choices)}"
+        if self.low is None or self.high is None:
+            return WHAT_TYPE[self.type]
+        return f"{WHAT_TYPE[self.type]} from {_plain(self.low)} to {_plain(self.high)}"
+
+    def coerce(self, value: object) -> Plain:
+        """``value`` as this member's type, or ValueError saying why not.
+
+        Strings are accepted when they spell a value of the type, because a designer
+        without the project file types ``value`` = ``5`` as a string.
+        """
+        if self.choices:
+            if str(value).lower() not in self.choices:
+                raise ValueError(f"{value!r} is not {self.expected}")
+            return str(value).lower()
+        if self.type in ("string", "file"):
+            return str(value)
+        if self.type == "bool":
+            if isinstance(value, str) and value.strip().lower() in ("true", "false"):
+                return value.strip().lower() == "true"
+            if isinstance(value, bool):
+                return value
+            raise ValueError(f"{value!r} is not true or false")
+        number = parse_number(value) if isinstance(value, str) else value
+        if isinstance(number, bool) or not isinstance(number, (int, float)):
+            raise ValueError(f"{value!r} is not a number")
+        if self.type == "int" and number != int(number):
+            raise ValueError(f"{value!r} is not a whole number")
+        if (self.low is not None and number < self.low) or (
+                self.high is not None and number > self.high):
+            raise ValueError(f"{value!r} is not {self.expected}")
+        return int(number) if self.type == "int" else float(number)
+
+
+@dataclass(frozen=True)
+class TiledClass:
+    """A class a tile, an object or a map can have in Tiled."""
+
+    name: str
+    use_as: UseAs
+    color: str  # #rrggbb, how Tiled draws objects of this class
+    doc: str
+    members: tuple[Member, ...] = ()
+
+    def defaults(self) -> dict[str, Plain]:
+        return {member.name: member.default for member in self.members}
+
+    def member(self, name: str) -> Member:
+        return next(m for m in self.members if m.name == name)
+
+
+def speed(name: str, default: float, doc: str) -> Member:
+    return Member(name, "float", default, doc, 0.0, MAX_SPEED_PX_S)
+
+
+def classes_for(tuning: Tuning) -> tuple[TiledClass, ...]:
+    """Every class, with the defaults that ``tuning`` implies."""
+    return (
+        TiledClass("Player", "object", "#3a7bd5",
+                   "Where the player starts. A rectangle's size is the hitbox; a point gets "
+                   f"the default {tuning.player_width_px}x{tuning.player_height_px} hitbox "
+                   "with its top-left corner at the point. Exactly one per map."),
+        TiledClass("Coin", "object", "#f0c020", "A coin to pick up.",
+                   (Member("value", "int", 1, "points it is worth", -MAX_COIN_VALUE,
+                           MAX_COIN_VALUE),)),
+        TiledClass("Enemy", "object", "#d9534f",
+                   "An enemy that patrols, turning at walls and ledges. Stomp it from above.",
+                   (speed("speed", tuning.enemy_speed_px_s, "patrol speed in px/s"),
+                    Member("kind", "string", EnemyKind.WALKER.value,
+                           "walker patrols; hopper patrols in hops",
+                           choices=tuple(kind.value for kind in EnemyKind)))),
+        TiledClass("Exit", "object", "#5cb85c",
+                   "A rectangle; touching it completes the level."),
+        TiledClass(TileKind.SOLID.value, "tile", "#8c6d46", "Blocks from every side."),
+        TiledClass(TileKind.ONE_WAY.value, "tile", "#c8a165",
+                   "Blocks only a body coming down onto its top."),
+        TiledClass(TileKind.HAZARD.value, "tile", "#ff5050",
+                   "Costs a life on touch; blocks nothing."),
+        TiledClass("Level", "map", "#a0a0a4",
+                   "A map's optional properties (set the map's class to Level in Tiled 1.9+ "
+                   "to see them listed).",
+                   (Member("title", "string", "", "shown when the level starts"),
+                    Member("next_level", "file", "", "the map that follows this one"),
+                    speed("gravity", tuning.gravity_px_s2, "downward pull in px/s²"),
+                    speed("max_fall_speed", tuning.max_fall_speed_px_s,
+                          "fastest fall in px/s"),
+                    speed("run_speed", tuning.run_speed_px_s, "top running speed in px/s"),
+                    speed("jump_speed", tuning.jump_speed_px_s,
+                          "upward speed of a jump in px/s"))),
+    )
+
+
+CLASSES = classes_for(Tuning())
+CLASSES_BY_NAME = {cls.name.lower(): cls for cls in CLASSES}
+OBJECT_CLASSES = tuple(cls for cls in CLASSES if cls.use_as == "object")
+TILE_KINDS = {kind.value.lower(): kind for kind in TileKind}
+LEVEL = CLASSES_BY_NAME["level"]
+
+
+def find(name: str) -> TiledClass:
+    """The class named ``name``, in any letter case (KeyError if there is none)."""
+    return CLASSES_BY_NAME[name.lower()]

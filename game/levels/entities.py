@@ -1,0 +1,171 @@
+"""From Tiled objects to the game's spawn, coins, enemies and exits.
+
+Where it sits: the last step of loading. :mod:`game.levels.objects` has read the objects;
+this module decides what each one is, applies the class defaults of
+:mod:`game.levels.classes` and checks what the game needs: exactly one Player, shapes that
+make sense for their class, values of the right type, everything inside the map.
+
+What it teaches: validate at the boundary, all at once. Every object is checked and every
+problem recorded, so a designer sees all the broken objects of a map in one run.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from dataclasses import dataclass
+
+from game.aabb import Box
+from game.level import CoinSpec, EnemySpec
+from game.levels.classes import (
+    CLASSES_BY_NAME,
+    OBJECT_CLASSES,
+    TILE_KINDS,
+    Plain,
+    TiledClass,
+    classes_for,
+)
+from game.levels.errors import Findings
+from game.levels.header import MapHeader
+from game.levels.objects import MapObject
+from game.tilegrid import TileGrid, TileKind
+from game.tuning import Tuning
+
+DEFAULT_COIN_PX = 8
+BODY_SHAPES = ("rectangle", "point", "ellipse", "tile")  # what a body's box can come from
+CLASS_NAMES = ", ".join(cls.name for cls in OBJECT_CLASSES)
+
+
+@dataclass(frozen=True)
+class Entities:
+    """What the objects of a map become."""
+
+    spawn: Box
+    coins: tuple[CoinSpec, ...]
+    enemies: tuple[EnemySpec, ...]
+    exits: tuple[Box, ...]
+
+
+def _a(name: str) -> str:
+    """``name`` with its indefinite article.
+
+    >>> _a("Exit"), _a("Coin")
+    ('an Exit', 'a Coin')
+    """
+    return f"{'an' if name[:1].lower() in 'aeiou' else 'a'} {name}"
+
+
+def _values(o: MapObject, cls: TiledClass, findings: Findings) -> dict[str, Plain]:
+    """The object's properties for its class: defaults, then its own, each type-checked."""
+    values = cls.defaults()
+    names = {member.name for member in cls.members}
+    for name, value in o.properties.items():
+        if name not in names:
+            known = ", ".join(sorted(names)) or "no properties"
+            findings.warn(o.place, f"property '{name}' means nothing to {_a(cls.name)}",
+                          f"{_a(cls.name)} reads {known}; rename or delete it")
+            continue
+        member = cls.member(name)
+        try:
+            values[name] = member.coerce(value)
+        except ValueError as error:
+            findings.error(o.place, f"property '{name}': {error}",
+                           f"set '{name}' ({member.doc}) in the object's Properties")
+    return values
+
+
+def _box(o: MapObject, cls: TiledClass, point_size: tuple[float, float],
+         findings: Findings) -> Box | None:
+    """The object's box for the game; a point gets ``point_size`` with its corner there."""
+    if o.shape not in BODY_SHAPES:
+        findings.error(o.place, f"{_a(cls.name)} cannot be {_a(o.shape)}",
+                       "draw it with the Rectangle or Point tool, or as a tile")
+        return None
+    if o.rotation:
+        findings.warn(o.place, f"its rotation ({o.rotation:g}°) is ignored",
+                      "set Rotation to 0 in its Properties")
+    if o.is_point:
+        return Box(o.box.x, o.box.y, *point_size)
+    if o.box.w <= 0 or o.box.h <= 0:
+        findings.error(o.place, f"the {cls.name} has no area",
+                       "draw it as a point or as a rectangle with a size")
+        return None
+    return o.box
+
+
+def _check_inside(o: MapObject, box: Box, header: MapHeader, findings: Findings) -> None:
+    """Everything must fit in the map, and be over it or above it (the sky is open); the
+    Player must start there."""
+    width, height = header.cols * header.tile_w, header.rows * header.tile_h
+    on_map = box.right > 0 and box.left < width and box.top < height
+    if box.w > width or box.h > height:
+        findings.error(o.place, "it is larger than the map", "make it smaller in Tiled")
+    elif not on_map and o.cls == "player":
+        findings.error(o.place, "the Player starts outside the map", "move it onto the map")
+    elif not on_map:
+        findings.warn(o.place, "it is outside the map, where nothing can reach it",
+                      "move it onto the map")
+
+
+def _warn_unknown(objects: list[MapObject], findings: Findings) -> None:
+    """One warning per class the game does not know, naming its first object."""
+    by_class: dict[str, list[MapObject]] = defaultdict(list)
+    for o in objects:
+        if o.cls and o.cls not in CLASSES_BY_NAME:
+            by_class[o.class_name].append(o)
+        elif o.cls in TILE_KINDS:
+            findings.warn(o.place, f"a {TILE_KINDS[o.cls].value} tile placed as an object "
+                          "does not collide", "paint the tile on a tile layer instead")
+    for cls, group in by_class.items():
+        more = f" ({len(group)} objects have it)" if len(group) > 1 else ""
+        findings.warn(group[0].place, f"class '{cls}' means nothing to the game{more}",
+                      f"use one of {CLASS_NAMES}, or clear the class for notes")
+
+
+def build_entities(objects: list[MapObject], header: MapHeader, grid: TileGrid,
+                   tuning: Tuning, findings: Findings) -> Entities:
+    """Turn objects into the level's spawn, coins, enemies and exits, or record why not.
+
+    Class defaults (a Coin's value, an Enemy's speed) are those ``tuning`` implies."""
+    _warn_unknown(objects, findings)
+    classes = {cls.name.lower(): cls for cls in classes_for(tuning)}
+    spawns: list[Box] = []
+    coins: list[CoinSpec] = []
+    enemies: list[EnemySpec] = []
+    exits: list[Box] = []
+    sizes = {"player": (tuning.player_width_px, tuning.player_height_px),
+             "enemy": (tuning.enemy_width_px, tuning.enemy_height_px),
+             "coin": (DEFAULT_COIN_PX, DEFAULT_COIN_PX)}
+    for o in objects:
+        cls = classes.get(o.cls)
+        if cls is None or cls.use_as != "object":
+            continue
+        values = _values(o, cls, findings)
+        if o.cls == "exit" and o.is_point:
+            findings.error(o.place, "an Exit must be a rectangle",
+                           "draw the Exit with the Rectangle tool")
+            continue
+        box = _box(o, cls, sizes.get(o.cls, (0, 0)), findings)
+        if box is None:
+            continue
+        _check_inside(o, box, header, findings)
+        if o.cls == "player":
+            spawns.append(box)
+            if len(spawns) == 2:
+                findings.error(o.place, "a second Player object",
+                               "keep exactly one object with Class 'Player'")
+            if any(s.kind is TileKind.SOLID for s in grid.shapes_in(box)):
+                findings.warn(o.place, "the Player starts inside a Solid tile",
+                              "move the Player into open space")
+        elif o.cls == "coin":
+            coins.append(CoinSpec(box, int(values["value"])))
+        elif o.cls == "enemy":
+            enemies.append(EnemySpec(box, float(values["speed"]), str(values["kind"])))
+        else:
+            exits.append(box)
+    if not spawns:
+        findings.fail("", "this map has no Player object",
+                      "add a point or rectangle with Class 'Player' on an object layer")
+    if not exits:
+        findings.warn("", "this map has no Exit, so it can never be completed",
+                      "draw a rectangle with Class 'Exit' on an object layer")
+    return Entities(spawns[0], tuple(coins), tuple(enemies), tuple(exits))

@@ -1,0 +1,131 @@
+"""Write the game's classes where Tiled and pytmx look for them.
+
+Where it sits: ``python -m game.levels types --write`` regenerates three files in
+``levels/`` from :mod:`game.levels.classes`, and a test fails when the committed files
+differ from what this module generates. Edit the classes in Python, never in Tiled.
+
+============================  ============================================================
+``tile-hopper.tiled-project``  Tiled's project: folders, Play/Check commands, and the
+                               classes as ``propertyTypes`` (Tiled 1.9+ applies their
+                               colours and defaults to objects whose Class is set)
+``objecttypes.xml``            the same classes as Tiled 1.8's object types, which the
+                               project names, so Tiled 1.8 shows the defaults and colours
+``propertytypes.json``         the classes as Tiled's "Export Types" JSON, which pytmx reads
+                               with ``TiledMap(custom_property_filename=...)``
+============================  ============================================================
+
+What it teaches: generated files that are committed must be checked for staleness, or the
+copy drifts from its source.
+
+>>> [m["name"] for m in property_types()[-1]["members"]][:3]
+['title', 'next_level', 'gravity']
+"""
+
+from __future__ import annotations
+
+import json
+import xml.etree.ElementTree as ET
+from pathlib import Path
+from typing import Any
+
+from game.levels import LEVELS_DIR
+from game.levels.classes import CLASSES, Member, TiledClass
+
+PROJECT_FILE = LEVELS_DIR / "tile-hopper.tiled-project"
+OBJECT_TYPES_FILE = LEVELS_DIR / "objecttypes.xml"
+PROPERTY_TYPES_FILE = LEVELS_DIR / "propertytypes.json"
+
+PYTHON = "%projectpath/../.venv/bin/python"  # the virtual environment of the README
+COMMANDS = (("Play this level", "-m game --level %mapfile --watch", "F5"),
+            ("Check this level", "-m game.levels check %mapfile", "F6"))
+
+
+def enum_name(cls: TiledClass, member: Member) -> str:
+    return f"{cls.name}{member.name.title()}"
+
+
+def _member_json(cls: TiledClass, member: Member) -> dict[str, Any]:
+    entry: dict[str, Any] = {"name": member.name, "type": member.type,
+                             "value": member.default}
+    if member.choices:
+        entry["propertyType"] = enum_name(cls, member)
+    return entry
+
+
+def property_types(classes: tuple[TiledClass, ...] = CLASSES) -> list[dict[str, Any]]:
+    """The classes (and the enums their members use) in Tiled's JSON form."""
+    enums = [(cls, member) for cls in classes for member in cls.members if member.choices]
+    types: list[dict[str, Any]] = [
+        {"id": number, "name": enum_name(cls, member), "storageType": "string",
+         "type": "enum", "values": list(member.choices), "valuesAsFlags": False}
+        for number, (cls, member) in enumerate(enums, start=1)]
+    types += [
+        {"color": "#ff" + cls.color.lstrip("#"), "id": number, "name": cls.name,
+         "members": [_member_json(cls, member) for member in cls.members],
+         "type": "class", "useAs": [cls.use_as]}
+        for number, cls in enumerate(classes, start=len(enums) + 1)]
+    return types
+
+
+def project() -> dict[str, Any]:
+    """The ``.tiled-project`` file's content (Tiled 1.8's keys; later versions add more)."""
+    commands = [{"arguments": arguments, "command": PYTHON, "enabled": True, "name": name,
+                 "saveBeforeExecute": True, "shortcut": shortcut, "showOutput": True,
+                 "workingDirectory": "%projectpath/.."}
+                for name, arguments, shortcut in COMMANDS]
+    return {"automappingRulesFile": "", "commands": commands, "extensionsPath": "extensions",
+            "folders": [".", "../assets"], "objectTypesFile": OBJECT_TYPES_FILE.name,
+            "propertyTypes": property_types()}
+
+
+def _default_text(value: object) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return f"{value:g}" if isinstance(value, float) else str(value)
+
+
+def object_types() -> str:
+    """Tiled 1.8's ``objecttypes.xml``: the object and tile classes with their defaults."""
+    root = ET.Element("objecttypes")
+    for cls in CLASSES:
+        if cls.use_as == "map":
+            continue  # object types apply to objects and tiles only
+        node = ET.SubElement(root, "objecttype", {"name": cls.name, "color": cls.color})
+        for member in cls.members:
+            ET.SubElement(node, "property", {"name": member.name, "type": member.type,
+                                             "default": _default_text(member.default)})
+    ET.indent(root, space=" ")
+    return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(root, "unicode") + "\n"
+
+
+def _json_text(data: object) -> str:
+    return json.dumps(data, indent=4, ensure_ascii=False) + "\n"
+
+
+def generated_files() -> dict[Path, str]:
+    """Each generated file and the text it should hold."""
+    return {PROJECT_FILE: _json_text(project()),
+            OBJECT_TYPES_FILE: object_types(),
+            PROPERTY_TYPES_FILE: _json_text(property_types())}
+
+
+def stale_files() -> list[Path]:
+    """The generated files whose committed text differs from what would be generated."""
+    stale = []
+    for path, text in generated_files().items():
+        try:
+            current = path.read_text(encoding="utf-8")
+        except OSError:
+            current = None
+        if current != text:
+            stale.append(path)
+    return stale
+
+
+def write_files() -> list[Path]:
+    """Write every generated file; return the ones that changed."""
+    changed = stale_files()
+    for path, text in generated_files().items():
+        if path in changed:
+            path.write_text(text, encoding="utf-8")
+    return changed

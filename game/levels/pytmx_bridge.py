@@ -1,0 +1,111 @@
+"""What pytmx is given: a clean copy of the map that holds only what pytmx is good at.
+
+Where it sits: the last step of loading. By now the map, its tilesets and its tile data
+have been read and checked; pytmx is asked for the two things it does well, numbering the
+tiles as they are used (each flipped variant gets its own id) and cutting, flipping and
+converting the tile images, and for nothing else.
+
+What it teaches: wrap a library you cannot fix. pytmx 3.32 trips over a dozen real-world
+things (templates, ``class=``, fractional offsets, tile collision shapes in embedded
+tilesets, the hexagonal flag, list properties, zstd, images without a size...). Rather
+than patch it, the loader builds a small document without any of them: tilesets with
+absolute image paths and no properties or collision shapes, and the tile layers, in
+document order, as CSV of ids already checked. So pytmx only ever sees input it handles,
+and anything it still raises becomes a :class:`~game.levels.errors.LevelError`.
+
+>>> header = MapHeader(cols=2, rows=1, tile_w=16, tile_h=16, background=None)
+>>> layer = LayerNode(ET.Element("layer"), "ground", (0.0, 0.0), 1.0, True)
+>>> ET.tostring(clean_map(header, Tilesets([]), [(layer, [1, 0x80000001])]), "unicode")
+'<map version="1.8" orientation="orthogonal" renderorder="right-down" width="2" \
+height="1" tilewidth="16" tileheight="16" infinite="0"><layer name="ground" width="2" \
+height="1"><data encoding="csv">1,2147483649</data></layer></map>'
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+import pygame
+import pytmx
+import pytmx.pytmx
+import pytmx.util_pygame
+
+from game.level import TileLayer
+from game.levels.errors import Findings
+from game.levels.header import MapHeader
+from game.levels.layers import LayerNode
+from game.levels.tilesets import Tileset, Tilesets
+
+FIX_IMAGES = "re-save the tileset image as PNG and pick it again in Tiled"
+
+
+def _tileset_element(tileset: Tileset) -> ET.Element:
+    node = ET.Element("tileset", {
+        "firstgid": str(tileset.firstgid), "name": tileset.name,
+        "tilewidth": str(tileset.tile_w), "tileheight": str(tileset.tile_h),
+        "spacing": str(tileset.spacing), "margin": str(tileset.margin),
+        "tilecount": str(tileset.tilecount), "columns": str(tileset.columns)})
+    if tileset.image is not None:
+        image = {"source": str(tileset.image), "width": str(tileset.image_size[0]),
+                 "height": str(tileset.image_size[1])}
+        if tileset.trans:
+            image["trans"] = tileset.trans
+        ET.SubElement(node, "image", image)
+    for tile_id, tile in sorted(tileset.tiles.items()):
+        if tile.image is not None:
+            ET.SubElement(ET.SubElement(node, "tile", {"id": str(tile_id)}), "image", {
+                "source": str(tile.image), "width": str(tile.image_size[0]),
+                "height": str(tile.image_size[1])})
+    return node
+
+
+def clean_map(header: MapHeader, tilesets: Tilesets,
+              layers: Sequence[tuple[LayerNode, Sequence[int]]]) -> ET.Element:
+    """The document pytmx parses: grid, tilesets and tile layers as CSV, nothing more."""
+    root = ET.Element("map", {
+        "version": "1.8", "orientation": "orthogonal", "renderorder": "right-down",
+        "width": str(header.cols), "height": str(header.rows),
+        "tilewidth": str(header.tile_w), "tileheight": str(header.tile_h), "infinite": "0"})
+    root.extend(_tileset_element(tileset) for tileset in tilesets.all)
+    for layer, gids in layers:
+        node = ET.SubElement(root, "layer", {"name": layer.name, "width": str(header.cols),
+                                             "height": str(header.rows)})
+        ET.SubElement(node, "data", {"encoding": "csv"}).text = ",".join(map(str, gids))
+    return root
+
+
+def parse(path: Path, document: ET.Element, images: bool, findings: Findings) -> Any:
+    """pytmx's TiledMap of the clean document; with ``images``, tile images are loaded
+    (which needs ``pygame.display.set_mode`` first)."""
+    loader = pytmx.util_pygame.pygame_image_loader if images else pytmx.pytmx.default_image_loader
+    try:
+        tmx = pytmx.TiledMap(image_loader=loader, allow_duplicate_names=True)
+        tmx.filename = str(path)  # pytmx joins image paths to its folder; ours are absolute
+        tmx.parse_xml(document)
+    except (FileNotFoundError, pygame.error, ValueError) as error:
+        findings.fail("", f"a tile image cannot be loaded ({error})", FIX_IMAGES)
+    except Exception as error:  # pytmx raises bare Exceptions
+        findings.fail("", f"pytmx could not read the map ({type(error).__name__}: {error})",
+                      "open the map in Tiled and save it again")
+    return tmx
+
+
+def drawn_layers(tmx: Any, layers: Sequence[LayerNode]) -> list[TileLayer]:
+    """The tile layers to draw, with pytmx's ids (the keys of the level's tile images)."""
+    return [TileLayer(layer.name, tuple(tuple(row) for row in parsed.data), layer.opacity,
+                      layer.offset)
+            for layer, parsed in zip(layers, tmx.layers, strict=True)]
+
+
+def tile_images(tmx: Any, layers: Sequence[TileLayer]) -> dict[int, pygame.Surface]:
+    """The image of every tile id the layers use."""
+    used = {gid for layer in layers for row in layer.gids for gid in row if gid}
+    images: dict[int, pygame.Surface] = {}
+    for gid in used:
+        image = tmx.images[gid] if gid < len(tmx.images) else None
+        if isinstance(image, pygame.Surface):
+            images[gid] = image
+    return images

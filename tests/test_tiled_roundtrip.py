@@ -1,0 +1,98 @@
+"""Through real Tiled and back: every shipped level re-saved by ``tiled --export-map`` still
+passes the checker and plays exactly the same.
+
+Three ways of saving: as it is; with the tileset embedded in the map (with its collision
+rectangles, which is where pytmx 3.32 invents a layer); and with the object types' defaults
+written into every object (``--resolve-types-and-properties``, which needs the project's
+``objecttypes.xml`` where Tiled 1.8's command line looks for it). Tiled writes paths
+relative to the saved file, so each variant is saved in place in a copy of the project.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from game.campaign import Campaign, Outcome
+from game.inputs import InputScript
+from game.levels import LEVELS_DIR
+from game.levels.project import OBJECT_TYPES_FILE
+
+TILED = shutil.which("tiled")
+SHIPPED = sorted(LEVELS_DIR.glob("*.tmx"))
+SCRIPTS = Path(__file__).resolve().parent / "scripts"
+VARIANTS = {"resaved": [], "embedded-tilesets": ["--embed-tilesets"],
+            "types-resolved": ["--resolve-types-and-properties"]}
+MAX_TICKS = 60 * 60
+FALLBACK_SCRIPT = "0 +right\n" + "".join(f"{t} +jump\n{t + 8} -jump\n"
+                                         for t in range(30, 1200, 45))
+
+pytestmark = pytest.mark.skipif(TILED is None, reason="Tiled is not installed")
+
+
+def tiled(*args: str | Path, home: Path) -> None:
+    env = {**os.environ, "QT_QPA_PLATFORM": "offscreen", "HOME": str(home),
+           "XDG_CONFIG_HOME": str(home / "config"), "XDG_DATA_HOME": str(home / "data"),
+           "XDG_RUNTIME_DIR": str(home)}
+    result = subprocess.run([str(TILED), *map(str, args)], env=env, capture_output=True,
+                            text=True, timeout=60, check=False)
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+@pytest.fixture(scope="module")
+def resaved(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
+    """For each variant, the folder of a project copy whose levels Tiled saved again."""
+    home = tmp_path_factory.mktemp("home")
+    home.chmod(0o700)
+    (home / "data" / "tiled").mkdir(parents=True)
+    shutil.copy(OBJECT_TYPES_FILE, home / "data" / "tiled" / "objecttypes.xml")
+    folders = {}
+    for variant, options in VARIANTS.items():
+        project = tmp_path_factory.mktemp(variant)
+        shutil.copytree(LEVELS_DIR, project / "levels")
+        shutil.copytree(LEVELS_DIR.parent / "assets", project / "assets")
+        tileset = project / "assets" / "tiles.tsx"
+        tiled("--export-tileset", tileset, tileset, home=home)
+        for level in SHIPPED:
+            copy = project / "levels" / level.name
+            tiled("--export-map", *options, copy, copy, home=home)
+        folders[variant] = project / "levels"
+    return folders
+
+
+def final_state(level: Path) -> dict[str, object]:
+    """Play ``level`` with its winning script (or a generic one); what the run ends with."""
+    script_path = SCRIPTS / f"{level.stem}.txt"
+    script = InputScript.load(script_path) if script_path.is_file() else InputScript.parse(
+        FALLBACK_SCRIPT, "fallback")
+    campaign = Campaign(level)
+    while campaign.outcome is Outcome.RUNNING and campaign.levels_completed == 0 and (
+            campaign.ticks < MAX_TICKS):
+        campaign.tick(script.held_at(campaign.ticks))
+    player = campaign.world.player
+    return {"ticks": campaign.ticks, "outcome": campaign.outcome,
+            "levels_completed": campaign.levels_completed, "score": campaign.score,
+            "coins": campaign.coins_collected, "stomps": campaign.enemies_stomped,
+            "deaths": campaign.deaths, "player": (player.box, player.vx, player.vy,
+                                                  player.on_ground)}
+
+
+@pytest.mark.parametrize("variant", sorted(VARIANTS))
+def test_levels_resaved_by_tiled_pass_the_checker(variant: str,
+                                                  resaved: dict[str, Path]) -> None:
+    maps = sorted(resaved[variant].glob("*.tmx"))
+    result = subprocess.run([sys.executable, "-m", "game.levels", "check", *map(str, maps)],
+                            capture_output=True, text=True, timeout=60, check=False)
+    assert result.returncode == 0 and result.stdout == "", result.stdout
+
+
+@pytest.mark.parametrize("variant", sorted(VARIANTS))
+@pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
+def test_levels_resaved_by_tiled_play_the_same(level: Path, variant: str,
+                                               resaved: dict[str, Path]) -> None:
+    assert final_state(resaved[variant] / level.name) == final_state(level)
