@@ -18,18 +18,29 @@ from pathlib import Path
 POLL_INTERVAL_S = 0.25  # how often the files are looked at: well inside the 1 s promise
 
 
-def level_files(level_path: Path) -> list[Path]:
-    """The map and the external files it names (tilesets, templates), as far as readable."""
-    files = [level_path]
+def _sources(xml_file: Path) -> list[Path]:
+    """The files one Tiled file names (tilesets, templates, images), relative to itself."""
     try:
-        root = ET.parse(level_path).getroot()
+        root = ET.parse(xml_file).getroot()
     except (OSError, ET.ParseError):
-        return files
+        return []
+    found = []
     for node in root.iter():
-        source = node.get("source") if node.tag == "tileset" else node.get("template")
+        source = node.get("template") or (node.get("source") if node.tag in ("tileset", "image")
+                                          else None)
         if source:
-            files.append((level_path.parent / source).resolve())
-    return files
+            found.append((xml_file.parent / source).resolve())
+    return found
+
+
+def level_files(level_path: Path) -> list[Path]:
+    """The map, the tilesets and templates it names, and their images, as far as readable."""
+    files = [level_path]
+    for source in _sources(level_path):
+        files.append(source)
+        if source.suffix in (".tsx", ".tx"):
+            files.extend(_sources(source))
+    return list(dict.fromkeys(files))
 
 
 def _stamp(path: Path) -> float | None:

@@ -23,7 +23,7 @@ ROWS = ["            ",
 
 def test_the_watcher_sees_the_map_and_its_tileset_change(tmp_path: Path) -> None:
     level = write_tmx(tmp_path, ROWS)
-    assert level_files(level) == [level, (tmp_path / "t.tsx").resolve()]
+    assert level_files(level)[:2] == [level, (tmp_path / "t.tsx").resolve()]
     watcher = FileWatcher(level)
     now = 100.0
     assert not watcher.poll(now)
