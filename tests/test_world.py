@@ -311,3 +311,14 @@ def test_a_respawn_uses_the_freed_spawn_too() -> None:
     while not campaign.deaths:
         campaign.tick(RIGHT)
     assert campaign.world.player.box == free_spawn
+
+
+def test_a_diagonal_move_into_an_inner_corner_ends_flush_against_both_faces() -> None:
+    level = level_from_ascii(["P      ", "      #", "      #", "#######"],
+                             spawn=Box(60, 10, 12, 14))
+    world = World(level, replace(INSTANT, run_speed_px_s=3000.0, gravity_px_s2=0.0,
+                                 max_fall_speed_px_s=3000.0))
+    world.player.vy = 3000.0
+    world.step(RIGHT)
+    assert world.player.box.right == 6 * 16 and world.player.box.bottom == 3 * 16
+    assert world.player.on_ground and world.max_penetration_px == 0.0

@@ -1,0 +1,27 @@
+"""The code teaches: every module opens with a syllabus, collision modules carry doctests."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+GAME = Path(__file__).resolve().parent.parent / "game"
+MODULES = sorted(p for p in GAME.rglob("*.py"))
+COLLISION_MODULES = ["aabb", "circles", "sat", "masks", "composite", "swept", "tilegrid",
+                     "movement", "spatial_grid", "quadtree", "sort_and_sweep", "brute_force",
+                     "response", "contacts", "loop", "camera"]
+
+
+@pytest.mark.parametrize("path", MODULES, ids=[str(p.relative_to(GAME)) for p in MODULES])
+def test_every_module_opens_with_a_syllabus_docstring(path: Path) -> None:
+    docstring = ast.get_docstring(ast.parse(path.read_text(encoding="utf-8")))
+    assert docstring, f"{path} has no module docstring"
+    if path.name != "__main__.py":
+        assert len(docstring.split()) >= 12, f"{path}: the docstring is too short to teach"
+
+
+@pytest.mark.parametrize("name", COLLISION_MODULES)
+def test_every_collision_module_carries_doctest_examples(name: str) -> None:
+    assert ">>> " in (GAME / f"{name}.py").read_text(encoding="utf-8")
