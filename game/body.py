@@ -14,6 +14,7 @@ import pygame
 
 from game.aabb import Box
 from game.movement import Move
+from game.platforms import Platform
 from game.tilegrid import TileKind, TileShape
 
 
@@ -29,6 +30,8 @@ class Body(pygame.sprite.Sprite):
         self.vy = 0.0  # px/s, down is positive
         self.on_ground = False
         self.standing_on: TileShape | None = None  # what the ground probe found
+        self.riding: Platform | None = None  # the moving platform under the feet, if any
+        self.crushed = False  # a platform pushed it into a wall this tick
         self.corner_correction_px = 0.0  # how far a head bump may slide past a corner
         self.last_x: Move | None = None  # recorded for the debug overlay
         self.last_y: Move | None = None

@@ -12,7 +12,7 @@ from enum import Enum
 from game.aabb import Box
 from game.body import Body
 from game.movement import Move
-from game.tilegrid import TileGrid, TileKind
+from game.tilegrid import Solids, TileKind
 from game.tuning import Tuning
 
 LEDGE_PROBE_PX = 1.0  # size of the square looked at just beyond the leading foot
@@ -34,7 +34,7 @@ class Enemy(Body):
         self.direction = -1
         self.rest_ticks_left = 0
 
-    def decide(self, grid: TileGrid, tuning: Tuning) -> None:
+    def decide(self, grid: Solids, tuning: Tuning) -> None:
         """Turn at a ledge, then walk (or hop) on, and fall."""
         if self.on_ground and not self._ground_ahead(grid):
             self.direction = -self.direction
@@ -54,7 +54,7 @@ class Enemy(Body):
         self.vy = -tuning.hopper_jump_speed_px_s
         self.rest_ticks_left = tuning.hopper_rest_ticks
 
-    def _ground_ahead(self, grid: TileGrid) -> bool:
+    def _ground_ahead(self, grid: Solids) -> bool:
         box = self.box
         front = box.right if self.direction > 0 else box.left - LEDGE_PROBE_PX
         probe = Box(front, box.bottom, LEDGE_PROBE_PX, LEDGE_PROBE_PX)

@@ -14,6 +14,7 @@ from pathlib import Path
 import pygame
 
 from game.aabb import Box
+from game.platforms import PlatformSpec
 from game.tilegrid import TileGrid
 
 
@@ -50,6 +51,8 @@ class Level:
     coins: tuple[CoinSpec, ...] = ()
     enemies: tuple[EnemySpec, ...] = ()
     exits: tuple[Box, ...] = ()
+    platforms: tuple[PlatformSpec, ...] = ()
+    checkpoints: tuple[Box, ...] = ()
     title: str = ""
     next_level: Path | None = None
     properties: Mapping[str, object] = field(default_factory=dict)

@@ -33,7 +33,7 @@ from dataclasses import dataclass
 from enum import Enum
 
 from game.aabb import Box
-from game.tilegrid import TileGrid, TileKind, TileShape
+from game.tilegrid import Solids, TileKind, TileShape
 
 GROUND_PROBE_PX = 1.0  # height of the strip under the feet that looks for ground
 
@@ -83,7 +83,7 @@ def _check_step(delta: float) -> None:
         raise ValueError(f"a step must be a finite number of pixels, not {delta}")
 
 
-def move_x(grid: TileGrid, box: Box, dx: float) -> Move:
+def move_x(grid: Solids, box: Box, dx: float) -> Move:
     """Move ``box`` by ``dx`` along x, stopping flush at the nearest solid face or map edge."""
     _check_step(dx)
     if dx == 0:
@@ -109,7 +109,7 @@ def move_x(grid: TileGrid, box: Box, dx: float) -> Move:
     return Move(box._replace(x=stop), hit, swept, box)
 
 
-def move_y(grid: TileGrid, box: Box, dy: float, *, through_one_way: bool = False) -> Move:
+def move_y(grid: Solids, box: Box, dy: float, *, through_one_way: bool = False) -> Move:
     """Move ``box`` by ``dy`` along y (down is positive), stopping flush at the nearest face.
 
     Going down, solid tops and one-way tops that start at or below the feet stop the body
@@ -138,7 +138,7 @@ def move_y(grid: TileGrid, box: Box, dy: float, *, through_one_way: bool = False
     return Move(box._replace(y=stop), hit, swept, box)
 
 
-def slide_past_ceiling_corner(grid: TileGrid, box: Box, dy: float,
+def slide_past_ceiling_corner(grid: Solids, box: Box, dy: float,
                               max_px: float) -> tuple[Move, Move] | None:
     """Corner correction: a rise blocked by a ceiling's corner by ``max_px`` or less slides past.
 
@@ -169,7 +169,7 @@ def slide_past_ceiling_corner(grid: TileGrid, box: Box, dy: float,
     return None
 
 
-def ground_under(grid: TileGrid, box: Box, *, through_one_way: bool = False,
+def ground_under(grid: Solids, box: Box, *, through_one_way: bool = False,
                  ) -> TileShape | None:
     """The solid or one-way shape whose top lies exactly at the feet, if any (the probe)."""
     probe = Box(box.x, box.bottom, box.w, GROUND_PROBE_PX)
@@ -182,18 +182,18 @@ def ground_under(grid: TileGrid, box: Box, *, through_one_way: bool = False,
     return None
 
 
-def touching(grid: TileGrid, box: Box, kind: TileKind) -> list[TileShape]:
+def touching(grid: Solids, box: Box, kind: TileKind) -> list[TileShape]:
     """The shapes of one kind that overlap the box (hazards, for instance)."""
     return [shape for shape in grid.shapes_in(box) if shape.kind is kind]
 
 
-def penetration_depth(grid: TileGrid, box: Box) -> float:
+def penetration_depth(grid: Solids, box: Box) -> float:
     """How deep the box sits inside any solid shape: 0.0 after a correct resolution."""
     return max((box.penetration(s.box) for s in touching(grid, box, TileKind.SOLID)),
                default=0.0)
 
 
-def nearest_free_place(grid: TileGrid, box: Box, search_px: float = 64.0) -> Box:
+def nearest_free_place(grid: Solids, box: Box, search_px: float = 64.0) -> Box:
     """The closest position to ``box`` where it overlaps no solid: a spawn inside a wall.
 
     Around axis-aligned walls the nearest free position has each coordinate either where it

@@ -54,6 +54,13 @@ PLAYER_RUN_FPS = 12
 PLAYER_RUN_FRAMES = (2, 3, 4, 5)
 PLAYER_JUMP_FRAME = 6  # rising
 PLAYER_FALL_FRAME = 7
+PLANK_COLOR = (150, 98, 52)
+PLANK_TOP_COLOR = (204, 150, 84)
+PLANK_EDGE_COLOR = (62, 36, 20)
+PLANK_TOP_PX = 2
+PLANK_BOLT_INSET_PX = 3
+PLANK_BOLT_GAP_PX = 8
+UNREACHED_TINT = (120, 120, 140)  # a checkpoint flag not yet touched is drawn greyed
 BLINK_HZ = 10  # while invulnerable after a hit, the player flickers at this rate
 
 OPAQUE = 255  # surface alpha of a fully opaque layer
@@ -183,8 +190,26 @@ def player_frame(player: Player, frame: int) -> int:
     return animation_index(frame, PLAYER_IDLE_FPS, PLAYER_IDLE_FRAMES)
 
 
+def _draw_platform(target: pygame.Surface, box: Box, camera: Camera) -> None:
+    """A bolted wooden plank filling the platform's box exactly (its hitbox is its look)."""
+    rect = box.moved(-camera.x, -camera.y).to_rect()
+    pygame.draw.rect(target, PLANK_COLOR, rect)
+    pygame.draw.rect(target, PLANK_TOP_COLOR, (rect.x, rect.y, rect.w, PLANK_TOP_PX))
+    pygame.draw.rect(target, PLANK_EDGE_COLOR, rect, width=1)
+    for bolt_x in range(rect.x + PLANK_BOLT_INSET_PX, rect.right - 1, PLANK_BOLT_GAP_PX):
+        target.set_at((bolt_x, rect.centery), PLANK_EDGE_COLOR)
+
+
 def _draw_sprites(target: pygame.Surface, world: World, assets: Assets, frame: int) -> None:
     camera = world.camera
+    for platform in world.platforms:
+        _draw_platform(target, platform.box, camera)
+    for number, flag in enumerate(world.checkpoints):
+        image = assets.exit_image
+        if number != world.checkpoint_reached:
+            image = image.copy()
+            image.fill(UNREACHED_TINT, special_flags=pygame.BLEND_RGB_MULT)
+        _blit_anchored(target, image, flag.box, camera)
     for goal in world.exits:
         _blit_anchored(target, assets.exit_image, goal.box, camera)
     for coin in world.coins:

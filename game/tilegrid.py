@@ -28,6 +28,7 @@ import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from enum import Enum
+from typing import Protocol
 
 from game.aabb import Box
 
@@ -48,6 +49,21 @@ class TileShape:
     kind: TileKind
     col: int = 0
     row: int = 0
+
+
+class Solids(Protocol):
+    """What the movement code needs of the world's solids: a region query and the map size.
+
+    The tile grid is one; :class:`game.platforms.SolidsWithPlatforms` adds moving platforms.
+    """
+
+    @property
+    def width_px(self) -> int: ...
+
+    @property
+    def height_px(self) -> int: ...
+
+    def shapes_in(self, region: Box) -> list[TileShape]: ...
 
 
 @dataclass

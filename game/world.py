@@ -47,10 +47,19 @@ from game.movement import (
     slide_past_ceiling_corner,
     touching,
 )
-from game.pickups import Coin, Exit
+from game.pickups import Checkpoint, Coin, Exit
+from game.platforms import Platform, SolidsWithPlatforms
 from game.player import Player
 from game.tilegrid import TileKind
 from game.tuning import Tuning
+
+
+def _push_needed(pusher: Box, body: Box, axis: str, step: float) -> float:
+    """How far ``body`` must move along ``axis`` to sit flush against the moving ``pusher``."""
+    if axis == "x":
+        return pusher.right - body.left if step > 0 else pusher.left - body.right
+    return pusher.bottom - body.top if step > 0 else pusher.top - body.bottom
+
 
 SKY_LIMIT_PX = 1_000_000.0  # how far above the map a body may fly before the sky stops it
 
@@ -65,6 +74,7 @@ class EventKind(Enum):
     HURT = "hurt"
     EXIT = "exit"
     JUMP = "jump"
+    CHECKPOINT = "checkpoint"
 
 
 @dataclass(frozen=True)
@@ -85,7 +95,7 @@ class TickStats:
     collision_s: float = 0.0
 
 
-def crossed(body: Body, thing: Coin | Exit | Enemy) -> bool:
+def crossed(body: Body, thing: Coin | Exit | Checkpoint | Enemy) -> bool:
     """``collided=`` for pygame.sprite: did the body's path this tick overlap the thing?"""
     return body.travelled_through(thing.box)
 
@@ -101,6 +111,12 @@ class World:
     def __post_init__(self) -> None:
         self.tuning = self.tuning.with_map_properties(self.level.properties)
         self.grid = self.level.grid
+        self.platforms: pygame.sprite.Group[Platform] = pygame.sprite.Group(
+            Platform(spec, number) for number, spec in enumerate(self.level.platforms))
+        self.solids = SolidsWithPlatforms(self.grid, list(self.platforms))
+        self.checkpoints: pygame.sprite.Group[Checkpoint] = pygame.sprite.Group(
+            Checkpoint(box) for box in self.level.checkpoints)
+        self.checkpoint_reached: int | None = None
         # A spawn drawn inside a wall is moved to the nearest free place before play starts.
         self.spawn = nearest_free_place(self.grid, self.level.spawn)
         self.player = Player(self.spawn, self.tuning)
@@ -118,7 +134,7 @@ class World:
         self.contacts: ContactTracker[ContactKey] = ContactTracker()
         self.stats = TickStats()
         self.max_penetration_px = 0.0
-        self.player.standing_on = ground_under(self.grid, self.player.box)
+        self.player.standing_on = ground_under(self.solids, self.player.box)
         self.player.on_ground = self.player.standing_on is not None
         self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
 
@@ -137,40 +153,53 @@ class World:
         if self.player.decide(held, self.tuning):
             events.append(Event(EventKind.JUMP))
         for enemy in self.enemies:
-            enemy.decide(self.grid, self.tuning)
+            enemy.decide(self.solids, self.tuning)
         bodies = self.bodies()
         before = {body: body.box for body in bodies}
-
-        # 2. x pass: move along x and stop flush at the first solid face swept.
         for body in bodies:
-            body.last_x = move_x(self.grid, body.box, body.vx * dt)
+            body.crushed = False
+
+        # 2. Platforms: each moves along its path, pushing what is in its way and carrying
+        #    what rides it, through the same swept moves (so never into a wall).
+        for platform in self.platforms:
+            self._move_platform(platform, *platform.next_step(dt))
+
+        # 3. x pass: move along x and stop flush at the first solid face swept.
+        for body in bodies:
+            body.last_x = move_x(self.solids, body.box, body.vx * dt)
             body.place(body.last_x.box)
 
-        # 3. y pass: the same along y, then probe one pixel below the feet.
+        # 4. y pass: the same along y, then probe one pixel below the feet.
         for body in bodies:
             self._move_y(body, body.vy * dt)
-            body.standing_on = ground_under(self.grid, body.box,
+            body.standing_on = ground_under(self.solids, body.box,
                                             through_one_way=body.dropping_through)
             body.on_ground = body.standing_on is not None
+            body.riding = self.solids.platform_of(body.standing_on)
 
-        # 4. React: each body reads what its own moves hit.
+        # 5. React: each body reads what its own moves hit.
         for body in bodies:
             assert body.last_x is not None and body.last_y is not None
             body.react(body.last_x, body.last_y)
 
-        # 5. Pickups: coins vanish from their group as they are collected.
+        # 6. Pickups: coins vanish from their group as they are collected.
         for coins in pygame.sprite.groupcollide(
                 self.players, self.coins, False, True, collided=crossed).values():
             events.extend(Event(EventKind.COIN, coin.value, coin.box) for coin in coins)
 
-        # 6. Contacts: what the player touches now. The tracker reports only what changed,
+        # 7. Contacts: what the player touches now. The tracker reports only what changed,
         #    so entering the exit is one event however long the player stands in it.
         touching_now = self._player_contacts()
         changes = self.contacts.update(touching_now)
-        if any(kind == "exit" for pair in changes.started for kind, _ in pair):
-            events.append(Event(EventKind.EXIT))
+        for kind, number in (key for pair in changes.started for key in pair):
+            if kind == "exit":
+                events.append(Event(EventKind.EXIT))
+            elif kind == "checkpoint":
+                self.spawn = self._checkpoint_spawn(number)
+                self.checkpoint_reached = number
+                events.append(Event(EventKind.CHECKPOINT, number))
 
-        # 7. Enemies: landing on top is a stomp; any other touch hurts. Spikes hurt for as
+        # 8. Enemies: landing on top is a stomp; any other touch hurts. Spikes hurt for as
         #    long as they are touched (not only on contact), so standing in them when the
         #    invulnerability runs out still costs a life.
         hurt = False
@@ -186,11 +215,12 @@ class World:
             elif kind == "hazard" and not self.player.invulnerable:
                 hurt = True
 
-        # 8. The void: falling below the map costs a life (and removes a falling enemy).
-        if self.player.box.top >= self.grid.height_px:
+        # 9. The void and the crush: falling below the map, or being pushed into a wall by a
+        #    platform, costs a life (and removes an enemy).
+        if self.player.box.top >= self.grid.height_px or self.player.crushed:
             hurt = True
         for enemy in self.enemies:
-            if enemy.box.top >= self.grid.height_px:
+            if enemy.box.top >= self.grid.height_px or enemy.crushed:
                 enemy.kill()
         if hurt and not any(e.kind is EventKind.EXIT for e in events):
             events.append(Event(EventKind.HURT, 1, self.player.box))
@@ -201,9 +231,9 @@ class World:
         # Measurement only: how deep does any body sit in a solid after resolution?
         for body in self.bodies():
             self.max_penetration_px = max(self.max_penetration_px,
-                                          penetration_depth(self.grid, body.box))
+                                          penetration_depth(self.solids, body.box))
 
-        # 9. Camera: follow the player, inside the map.
+        # 10. Camera: follow the player, inside the map.
         self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
         return events
 
@@ -212,6 +242,8 @@ class World:
         player = self.player
         pairs = {(PLAYER_KEY, ("exit", number)) for number, goal in enumerate(self.exits)
                  if crossed(player, goal)}
+        pairs |= {(PLAYER_KEY, ("checkpoint", number))
+                  for number, flag in enumerate(self.checkpoints) if crossed(player, flag)}
         pairs |= {(PLAYER_KEY, ("enemy", number)) for number, enemy in
                   self.enemy_by_number.items() if enemy.alive() and crossed(player, enemy)}
         for move in (player.last_x, player.last_y):
@@ -222,9 +254,9 @@ class World:
 
     def _move_y(self, body: Body, dy: float) -> None:
         """The y pass for one body, with corner correction for a rise that clips a ceiling."""
-        move = move_y(self.grid, body.box, dy, through_one_way=body.dropping_through)
+        move = move_y(self.solids, body.box, dy, through_one_way=body.dropping_through)
         if move.hit is not None and move.hit.side is Side.TOP and body.corner_correction_px:
-            slid = slide_past_ceiling_corner(self.grid, body.box, dy,
+            slid = slide_past_ceiling_corner(self.solids, body.box, dy,
                                              body.corner_correction_px)
             if slid is not None:
                 side, move = slid
@@ -237,6 +269,31 @@ class World:
             move = Move(move.box._replace(y=y), move.hit, move.swept, move.start)
         body.last_y = move
         body.place(move.box)
+
+    def _move_platform(self, platform: Platform, dx: float, dy: float) -> None:
+        """Move a platform one axis at a time, pushing bodies in its way and carrying riders."""
+        riders = [body for body in self.bodies() if body.riding is platform]
+        others = self.solids.without(platform)
+        for step, axis in ((dx, "x"), (dy, "y")):
+            if step == 0:
+                continue
+            platform.place(platform.box.moved(dx=step) if axis == "x"
+                           else platform.box.moved(dy=step))
+            move = move_x if axis == "x" else move_y
+            for body in self.bodies():
+                if body.box.overlaps(platform.box):
+                    body.place(move(others, body.box, _push_needed(platform.box, body.box,
+                                                                   axis, step)).box)
+                    body.crushed = body.box.overlaps(platform.box)
+                elif body in riders:
+                    body.place(move(others, body.box, step).box)
+
+    def _checkpoint_spawn(self, number: int) -> Box:
+        """Where the player comes back after touching checkpoint ``number``: standing in it."""
+        flag = list(self.checkpoints)[number].box
+        w, h = self.level.spawn.w, self.level.spawn.h
+        return nearest_free_place(self.solids, Box(flag.x + (flag.w - w) / 2,
+                                                   flag.bottom - h, w, h))
 
     @staticmethod
     def _came_from_above(player_before: Box, enemy_before: Box) -> bool:

@@ -434,8 +434,8 @@ def test_warnings_do_not_change_the_checkers_exit_status(tmp_path: Path) -> None
     result = checker(path)
     assert result.returncode == 0
     assert result.stdout == (f"{path}: object #3 '': warning: class 'Sign' means nothing to "
-                             "the game — use one of Player, Coin, Enemy, Exit, or clear the "
-                             "class for notes\n")
+                             "the game — use one of Player, Coin, Enemy, Exit, Checkpoint, "
+                             "Platform, or clear the class for notes\n")
 
 
 def test_a_folder_stands_for_the_maps_inside_it(tmp_path: Path) -> None:

@@ -137,6 +137,16 @@ def classes_for(tuning: Tuning) -> tuple[TiledClass, ...]:
                            choices=tuple(kind.value for kind in EnemyKind)))),
         TiledClass("Exit", "object", "#5cb85c",
                    "A rectangle; touching it completes the level."),
+        TiledClass("Checkpoint", "object", "#9b59b6",
+                   "A rectangle; touching it makes the player come back here after a lost "
+                   "life, standing at its bottom edge."),
+        TiledClass("Platform", "object", "#e67e22",
+                   "A moving platform: draw its path with the Polyline tool; the platform's "
+                   "top-left corner travels along it, back and forth (or round, for a "
+                   "Polygon). It carries what stands on it and pushes what is in its way.",
+                   (Member("width", "float", 48.0, "the platform's width in px", 1.0, 4096.0),
+                    Member("height", "float", 8.0, "the platform's height in px", 1.0, 4096.0),
+                    speed("speed", 40.0, "travel speed along the path in px/s"))),
         TiledClass(TileKind.SOLID.value, "tile", "#8c6d46", "Blocks from every side."),
         TiledClass(TileKind.ONE_WAY.value, "tile", "#c8a165",
                    "Blocks only a body coming down onto its top."),

@@ -27,6 +27,7 @@ from game.levels.classes import (
 from game.levels.errors import Findings
 from game.levels.header import MapHeader
 from game.levels.objects import MapObject
+from game.platforms import PlatformSpec, Route
 from game.tilegrid import TileGrid, TileKind
 from game.tuning import Tuning
 
@@ -43,6 +44,8 @@ class Entities:
     coins: tuple[CoinSpec, ...]
     enemies: tuple[EnemySpec, ...]
     exits: tuple[Box, ...]
+    platforms: tuple[PlatformSpec, ...] = ()
+    checkpoints: tuple[Box, ...] = ()
 
 
 def _a(name: str) -> str:
@@ -132,6 +135,8 @@ def build_entities(objects: list[MapObject], header: MapHeader, grid: TileGrid,
     coins: list[CoinSpec] = []
     enemies: list[EnemySpec] = []
     exits: list[Box] = []
+    platforms: list[PlatformSpec] = []
+    checkpoints: list[Box] = []
     sizes = {"player": (tuning.player_width_px, tuning.player_height_px),
              "enemy": (tuning.enemy_width_px, tuning.enemy_height_px),
              "coin": (DEFAULT_COIN_PX, DEFAULT_COIN_PX)}
@@ -140,9 +145,14 @@ def build_entities(objects: list[MapObject], header: MapHeader, grid: TileGrid,
         if cls is None or cls.use_as != "object":
             continue
         values = _values(o, cls, findings)
-        if o.cls == "exit" and o.is_point:
-            findings.error(o.place, "an Exit must be a rectangle",
-                           "draw the Exit with the Rectangle tool")
+        if o.cls == "platform":
+            platform = _platform(o, values, findings)
+            if platform is not None:
+                platforms.append(platform)
+            continue
+        if o.cls in ("exit", "checkpoint") and o.is_point:
+            findings.error(o.place, f"{_a(cls.name)} must be a rectangle",
+                           f"draw the {cls.name} with the Rectangle tool")
             continue
         box = _box(o, cls, sizes.get(o.cls, (0, 0)), findings)
         if box is None:
@@ -160,6 +170,8 @@ def build_entities(objects: list[MapObject], header: MapHeader, grid: TileGrid,
             coins.append(CoinSpec(box, int(values["value"])))
         elif o.cls == "enemy":
             enemies.append(EnemySpec(box, float(values["speed"]), str(values["kind"])))
+        elif o.cls == "checkpoint":
+            checkpoints.append(box)
         else:
             exits.append(box)
     if not spawns:
@@ -168,4 +180,16 @@ def build_entities(objects: list[MapObject], header: MapHeader, grid: TileGrid,
     if not exits:
         findings.warn("", "this map has no Exit, so it can never be completed",
                       "draw a rectangle with Class 'Exit' on an object layer")
-    return Entities(spawns[0], tuple(coins), tuple(enemies), tuple(exits))
+    return Entities(spawns[0], tuple(coins), tuple(enemies), tuple(exits), tuple(platforms),
+                    tuple(checkpoints))
+
+
+def _platform(o: MapObject, values: dict[str, Plain], findings: Findings,
+              ) -> PlatformSpec | None:
+    """A Platform: a polyline (back and forth) or polygon (round and round) to follow."""
+    if o.shape not in ("polyline", "polygon") or len(o.points) < 2:
+        findings.error(o.place, "a Platform needs a path of two or more points",
+                       "draw the Platform with the Polyline tool, from where it starts")
+        return None
+    return PlatformSpec(Route(o.points, loop=o.shape == "polygon"), float(values["width"]),
+                        float(values["height"]), float(values["speed"]))

@@ -173,7 +173,8 @@ def _read(path: Path, findings: Findings, images: bool, check_images: bool,
     next_level = properties.get("next_level")
     return Level(
         path=path, grid=grid, spawn=entities.spawn, coins=entities.coins,
-        enemies=entities.enemies, exits=entities.exits,
+        enemies=entities.enemies, exits=entities.exits, platforms=entities.platforms,
+        checkpoints=entities.checkpoints,
         title=str(properties.get("title") or path.stem),
         next_level=path.parent / str(next_level) if next_level else None,
         properties=properties, layers=tuple(behind), foreground=tuple(in_front),

@@ -19,6 +19,7 @@ True
 
 from __future__ import annotations
 
+import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 
@@ -49,6 +50,7 @@ class MapObject:
     rotation: float = 0.0
     properties: dict[str, Value] = field(default_factory=dict)
     class_name: str = ""  # as the designer typed it, for messages
+    points: tuple[tuple[float, float], ...] = ()  # a polyline's or polygon's, in map pixels
 
     @property
     def place(self) -> str:
@@ -89,7 +91,29 @@ def read_object(node: ET.Element, layer: LayerNode, tilesets: Tilesets,
         cls, written = cls or tile.cls, written or tile.cls
         y -= h  # tile objects hang from their bottom-left corner
     return MapObject(object_id, node.get("name", ""), cls, Box(x, y, w, h), _shape(node),
-                     rotation, read_properties(node, findings, where), written)
+                     rotation, read_properties(node, findings, where), written,
+                     _points(node, x, y, findings, where))
+
+
+def _points(node: ET.Element, x: float, y: float, findings: Findings,
+            where: str) -> tuple[tuple[float, float], ...]:
+    """A polyline's or polygon's points in map pixels (Tiled stores them relative to x, y)."""
+    shape = node.find("polyline")
+    if shape is None:
+        shape = node.find("polygon")
+    if shape is None:
+        return ()
+    points: list[tuple[float, float]] = []
+    for pair in shape.get("points", "").split():
+        try:
+            px, py = (float(v) for v in pair.split(","))
+        except ValueError:
+            findings.fail(where, f"its point {pair!r} is not two numbers",
+                          "redraw the line in Tiled")
+        if not (math.isfinite(px) and math.isfinite(py)):
+            findings.fail(where, f"its point {pair!r} is not finite", "redraw the line in Tiled")
+        points.append((x + px, y + py))
+    return tuple(points)
 
 
 def read_objects(layers: list[LayerNode], tilesets: Tilesets, templates: Templates,

@@ -1,0 +1,115 @@
+"""Moving platforms and checkpoints: carry, push, crush, never through a wall."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+
+from game.aabb import Box
+from game.campaign import Campaign
+from game.inputs import NOTHING, Action
+from game.level import Level
+from game.platforms import PlatformSpec, Route
+from game.tuning import Tuning
+from game.world import EventKind, World
+from tests.maps import level_from_ascii
+
+RIGHT = frozenset({Action.RIGHT})
+
+
+def with_platform(rows: list[str], points: tuple[tuple[float, float], ...], speed: float,
+                  spawn: Box | None = None, width: float = 48) -> Level:
+    level = level_from_ascii(rows, spawn=spawn)
+    spec = PlatformSpec(Route(points), width, 8, speed)
+    return replace(level, platforms=(spec,))
+
+
+OPEN = ["                        ",
+        "                        ",
+        "                        ",
+        "                        ",
+        "                        ",
+        "                        ",
+        "                        ",
+        "                        ",
+        "                        "]
+
+
+def test_a_player_standing_on_a_platform_is_carried_along_with_it() -> None:
+    level = with_platform(OPEN, ((32.0, 80.0), (232.0, 80.0)), speed=60.0,
+                          spawn=Box(40, 66, 12, 14))
+    world = World(level)
+    world.step(NOTHING)
+    assert world.player.riding is not None
+    start_gap = world.player.box.x - next(iter(world.platforms)).box.x
+    for _ in range(60):
+        world.step(NOTHING)
+        platform = next(iter(world.platforms))
+        assert world.player.box.bottom == platform.box.top
+        assert world.player.box.x - platform.box.x == start_gap
+    assert world.player.box.x > 90
+
+
+def test_a_platform_rising_under_the_player_lifts_it() -> None:
+    level = with_platform(OPEN, ((32.0, 120.0), (32.0, 20.0)), speed=60.0,
+                          spawn=Box(40, 100, 12, 14))
+    world = World(level)
+    for _ in range(40):
+        world.step(NOTHING)
+    platform = next(iter(world.platforms))
+    assert platform.box.top < 100
+    assert world.player.box.bottom == platform.box.top and world.player.on_ground
+    assert world.max_penetration_px == 0.0
+
+
+def test_a_platform_pushes_a_player_in_its_way() -> None:
+    level = with_platform(OPEN, ((0.0, 110.0), (300.0, 110.0)), speed=120.0,
+                          spawn=Box(100, 100, 12, 14))
+    world = World(level, Tuning(gravity_px_s2=0.0))
+    for _ in range(30):
+        world.step(NOTHING)
+    platform = next(iter(world.platforms))
+    assert world.player.box.left == platform.box.right       # pushed, flush, not inside
+
+
+def test_a_platform_never_carries_a_rider_through_a_wall() -> None:
+    rows = list(OPEN)
+    rows[3] = "          #             "
+    rows[4] = "          #             "
+    level = with_platform(rows, ((32.0, 80.0), (300.0, 80.0)), speed=90.0,
+                          spawn=Box(60, 66, 12, 14))
+    world = World(level)
+    for _ in range(100):
+        world.step(NOTHING)
+        assert world.player.box.right <= 10 * 16 or world.player.box.left >= 11 * 16
+    assert world.max_penetration_px == 0.0
+
+
+def test_a_player_pushed_into_a_wall_by_a_platform_is_crushed() -> None:
+    rows = ["       ", "       ", "  #    ", "  #    ", "  #    ", "       "]
+    level = with_platform(rows, ((90.0, 40.0), (0.0, 40.0)), speed=60.0,
+                          spawn=Box(50, 40, 12, 14), width=16)
+    level = replace(level, platforms=(replace(level.platforms[0], height_px=32),))
+    campaign = Campaign(Path("x.tmx"), Tuning(gravity_px_s2=0.0), loader=lambda _: level)
+    for _ in range(60):
+        campaign.tick(NOTHING)
+        if campaign.deaths:
+            break
+    assert campaign.deaths == 1
+
+
+def test_touching_a_checkpoint_moves_the_respawn_point_there() -> None:
+    level = level_from_ascii(["                    ",
+                              " P                  ",
+                              "########   #########"])
+    level = replace(level, checkpoints=(Box(64, 0, 16, 32),))
+    campaign = Campaign(Path("x.tmx"), Tuning(), loader=lambda _: level)
+    checkpoint_seen = False
+    for _ in range(300):
+        events = campaign.tick(RIGHT)
+        checkpoint_seen |= any(e.kind is EventKind.CHECKPOINT for e in events)
+        if campaign.deaths:
+            break
+    assert checkpoint_seen and campaign.deaths == 1
+    player = campaign.world.player.box
+    assert 64 <= player.x and player.right <= 80 and player.bottom == 32
