@@ -1,13 +1,16 @@
 """Running the game: headless for scripts and tests, or in a window for people.
 
 Where it sits: the top of the dependency ladder. It owns the clock, the window, the keyboard
-and the files a run writes; the simulation below it never sees any of them.
+(and, through :mod:`game.gamepad`, the pads) and the files a run writes; the simulation below
+it never sees any of them.
 
-A frame in the window, in order:
+A frame in the window (:mod:`game.window`), in order:
 
-1. **Events**: quit, pause, F1 (debug overlay), F11 (fullscreen), menu keys.
+1. **Events**: quit, pads plugged in or out, F1 (debug overlay), F11 (fullscreen), and
+   menu presses from keys and pads (:mod:`game.menus`).
 2. **Ticks**: the fixed-step loop (:mod:`game.loop`) says how many 1/60 s ticks are due;
-   each one reads the held actions (keyboard or script) and calls ``Campaign.tick``.
+   each one reads the held actions (keyboard and pads together, or the script) and calls
+   ``Campaign.tick``.
 3. **Draw**: world, HUD, the debug overlay if on, then any screen (title, pause, ...).
 
 Headless runs skip 1 and 3 and step as fast as the machine allows.
@@ -48,7 +51,7 @@ KEYS: dict[Action, tuple[int, ...]] = {
 
 
 def held_keys(bindings: Mapping[Action, tuple[int, ...]] = KEYS) -> Actions:
-    """The actions whose keys are down right now."""
+    """The actions whose keys are down right now (the pads' are :meth:`Gamepads.held`)."""
     pressed = pygame.key.get_pressed()
     return frozenset(a for a, keys in bindings.items() if any(pressed[k] for k in keys))
 
@@ -78,9 +81,9 @@ class Run:
     recorder: Recorder = field(default_factory=Recorder)
     timing: Timing = field(default_factory=Timing)
 
-    def tick(self, keyboard: Actions = NOTHING) -> list[Event]:
-        """One simulation tick with input from the script, else from the keyboard."""
-        held = self.script.held_at(self.campaign.ticks) if self.script else keyboard
+    def tick(self, player: Actions = NOTHING) -> list[Event]:
+        """One simulation tick with input from the script, else what the player holds."""
+        held = self.script.held_at(self.campaign.ticks) if self.script else player
         self.recorder.observe(self.campaign.ticks, held)
         started = time.perf_counter()
         events = self.campaign.tick(held)

@@ -1,17 +1,20 @@
-"""The windowed game: title, play, pause, game over and win screens around the campaign.
+"""The windowed game: title, level select, play, pause, game over and win screens.
 
-Where it sits: above the simulation, beside the headless runner in :mod:`game.app`. It
-turns keys into menu choices and held actions, runs the fixed-step loop, and draws.
+Where it sits: above the simulation, beside the headless runner in :mod:`game.app`. Each
+frame reads the keyboard and any gamepads, runs the fixed-step loop, and draws. What a
+press does in a menu is decided in :mod:`game.menus` (a small state machine this loop only
+feeds and obeys); how pads become actions and menu moves is in :mod:`game.gamepad`.
 
-Screens: the title (Enter starts), playing, paused (Esc or P; Resume, Restart level, Quit to
-title), game over and won (Enter returns to the title). A scripted run (``--inputs``) skips
-the title and ends at the end of the run, like a headless one.
+Screens: the title (Play, Level select, Quit), the level select, playing, paused (Esc, P or
+Start; Resume, Restart level, Quit to title), game over and won (Enter or A returns to the
+title). Arrows, W/S, the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B
+go back. A scripted run (``--inputs``) or one given ``--level`` skips the title; a scripted
+run ends at the end of the run, like a headless one.
 """
 
 from __future__ import annotations
 
 import time
-from enum import Enum
 
 import pygame
 
@@ -20,15 +23,33 @@ from game.assets import Assets, load_assets
 from game.audio import Audio
 from game.campaign import Campaign, Outcome
 from game.debug_overlay import draw_debug
+from game.gamepad import Gamepads, StickEdges, pad_in_use, pad_nav
 from game.hud import draw_hud
-from game.levels import LevelError
+from game.levels import FIRST_LEVEL, LevelError
 from game.loop import FixedStep
+from game.menus import (
+    Command,
+    HeldOver,
+    LevelEntry,
+    Menus,
+    Nav,
+    QuitGame,
+    RestartLevel,
+    Screen,
+    StartLevel,
+    campaign_levels,
+    ended,
+    key_nav,
+    level_entries,
+    press,
+)
 from game.render import draw_world
 from game.saves import Attempt, Progress, progress_file
 from game.screens import (
-    PAUSE_ITEMS,
+    RELOAD_FAILED,
     draw_error_banner,
     draw_game_over,
+    draw_level_select,
     draw_pause,
     draw_title,
     draw_win,
@@ -36,15 +57,7 @@ from game.screens import (
 from game.settings import Settings, settings_file
 from game.watch import FileWatcher
 
-CONFIRM_KEYS = (pygame.K_RETURN, pygame.K_KP_ENTER, pygame.K_SPACE)
-PAUSE_KEYS = (pygame.K_ESCAPE, pygame.K_p)
-
-
-class Screen(Enum):
-    TITLE = "title"
-    PLAYING = "playing"
-    PAUSED = "paused"
-    ENDED = "ended"
+MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT)  # drawn instead of the world
 
 
 def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = None,
@@ -65,11 +78,9 @@ def play_in_window(run: Run) -> int:
     clock = pygame.time.Clock()
     stepper = FixedStep()
     scripted = run.script is not None
-    screen = Screen.PLAYING if scripted or run.args.level else Screen.TITLE
+    menus = Menus(Screen.PLAYING if scripted or run.args.level else Screen.TITLE)
     debug = bool(run.args.debug)
-    selected = 0
     frame = 0
-    first_level = run.campaign.world.level.path
     watcher: FileWatcher | None = None
     reload_error: str | None = None
     # The player's own files, read only when a person plays (never a scripted or timed run).
@@ -80,47 +91,45 @@ def play_in_window(run: Run) -> int:
         settings, settings_problem = settings_store.load(Settings.from_json, Settings)
         progress, progress_problem = progress_store.load(Progress.from_json, Progress)
         notice = settings_problem or progress_problem
-    keys = settings.key_codes()
+    keys, buttons = settings.key_codes(), settings.button_numbers()
     if settings.fullscreen:
         pygame.display.toggle_fullscreen()
     audio = Audio()  # silent, without a word, when there is no sound card
     audio.set_volume(settings.effects_volume, settings.music_volume)
+    pads, stick_edges, held_over = Gamepads(), StickEdges(), HeldOver()
+    using_pad = False  # the title shows the controls of the device last pressed
+    levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks and bests read each frame
     attempt = Attempt()
     while True:
         frame_s = clock.tick(TARGET_FPS) / 1000.0
         frame += 1
-        # 1. Events: window, overlay, fullscreen, menus.
+        entries = level_entries(levels, progress)
+        # 1. Events: the window, pads plugged in or out, overlay and fullscreen, menus.
         for event in pygame.event.get():
             if event.type == pygame.QUIT:
                 run.write_outputs(pygame.display.get_surface())
                 return EXIT_OK
-            if event.type != pygame.KEYDOWN:
-                continue
-            if event.key == pygame.K_F1:
+            pads.handle(event)
+            using_pad = pad_in_use(event, using_pad)
+            if event.type == pygame.KEYDOWN and event.key == pygame.K_F1:
                 debug = not debug
-            elif event.key == pygame.K_F11:
+            elif event.type == pygame.KEYDOWN and event.key == pygame.K_F11:
                 pygame.display.toggle_fullscreen()
                 settings.fullscreen = not settings.fullscreen
                 if personal:
                     notice = settings_store.save(settings.to_json()) or notice
-            elif screen is Screen.TITLE and event.key in CONFIRM_KEYS:
-                audio.play("menu")
-                run.campaign = Campaign(first_level, run.campaign.tuning, run.campaign.loader)
-                screen = Screen.PLAYING
-            elif screen is Screen.PLAYING and event.key in PAUSE_KEYS:
-                screen, selected = Screen.PAUSED, 0
-            elif screen is Screen.PAUSED:
-                audio.play("menu")
-                if event.key in PAUSE_KEYS:
-                    screen = Screen.PLAYING
-                elif event.key in (pygame.K_UP, pygame.K_w):
-                    selected = (selected - 1) % len(PAUSE_ITEMS)
-                elif event.key in (pygame.K_DOWN, pygame.K_s):
-                    selected = (selected + 1) % len(PAUSE_ITEMS)
-                elif event.key in CONFIRM_KEYS:
-                    screen = _choose(run, selected)
-            elif screen is Screen.ENDED and event.key in CONFIRM_KEYS:
-                screen = Screen.TITLE
+            elif (nav := _nav(event, stick_edges, menus.screen)) is not None:
+                before = menus
+                menus, command = press(menus, nav, entries)
+                if menus != before or command is not None:
+                    audio.play("menu")
+                if isinstance(command, QuitGame):
+                    run.write_outputs(pygame.display.get_surface())
+                    return EXIT_OK
+                if command is not None and (problem := _obey(command, run)) is not None:
+                    menus, notice = before, problem  # stay on the menu and say why
+                if menus.screen is Screen.PLAYING and before.screen is not Screen.PLAYING:
+                    held_over.begin(held_keys(keys) | pads.held(buttons))
 
         # Reload on save (--watch): a bad save keeps the old level and shows why.
         if run.args.watch:
@@ -135,19 +144,23 @@ def play_in_window(run: Run) -> int:
                     reload_error = str(error)
 
         # Music plays while playing, holds its place while paused, stops elsewhere.
-        if screen is Screen.PLAYING:
+        if menus.screen is Screen.PLAYING:
             audio.start_music()
-        elif screen is Screen.PAUSED:
+        elif menus.screen is Screen.PAUSED:
             audio.pause_music()
         else:
             audio.stop_music()
 
-        # 2. Ticks: as many fixed 1/60 s steps as real time has paid for; each tick's events
-        # sound, and a finished level is saved at once.
-        if screen is Screen.PLAYING:
+        # 2. Ticks: as many fixed 1/60 s steps as real time has paid for, each with what the
+        # keyboard and the pads hold; each tick's events sound, and a finished level is saved.
+        if menus.screen is Screen.PLAYING:
             for _ in range(stepper.advance(frame_s)):
                 attempt.before_tick(run.campaign)
-                events = run.tick(held_keys(keys))
+                try:
+                    events = run.tick(held_over.filter(held_keys(keys) | pads.held(buttons)))
+                except LevelError as error:  # the next level will not load: say so, go back
+                    menus, notice = Menus(), str(error)
+                    break
                 for tick_event in events:
                     audio.play(tick_event.kind)
                 finish = attempt.after_tick(run.campaign, events)
@@ -160,37 +173,56 @@ def play_in_window(run: Run) -> int:
                 if scripted or run.args.ticks is not None:
                     run.write_outputs(render_frame(run.campaign, debug=debug, assets=assets))
                     return EXIT_OK
-                screen = Screen.ENDED
+                menus = ended(menus)
         else:
             stepper.advance(0.0)
 
-        # 3. Draw: the world, the HUD, the overlay, then whatever screen is up.
-        target = render_frame(run.campaign, debug=debug, assets=assets, frame=frame,
-                              fps=clock.get_fps(), update_ms=_last_update_ms(run))
+        # 3. Draw: the world, HUD and overlay (or a menu in their place), then any screen on
+        # top, then a problem to report, if there is one.
+        target = pygame.display.get_surface()
+        if menus.screen not in MENU_SCREENS:
+            render_frame(run.campaign, debug=debug, assets=assets, frame=frame,
+                         fps=clock.get_fps(), update_ms=_last_update_ms(run))
+        _draw_screen(target, assets, menus, entries, run.campaign, frame, using_pad)
         if reload_error is not None:
-            draw_error_banner(target, assets, reload_error)
-        elif notice is not None and screen is not Screen.PLAYING:
+            draw_error_banner(target, assets, RELOAD_FAILED + reload_error)
+        elif notice is not None and menus.screen is not Screen.PLAYING:
             draw_error_banner(target, assets, notice)
-        if screen is Screen.TITLE:
-            draw_title(target, assets, frame)
-        elif screen is Screen.PAUSED:
-            draw_pause(target, assets, selected)
-        elif screen is Screen.ENDED:
-            if run.campaign.outcome is Outcome.WON:
-                draw_win(target, assets, run.campaign)
-            else:
-                draw_game_over(target, assets, run.campaign)
         pygame.display.flip()
 
 
-def _choose(run: Run, selected: int) -> Screen:
-    item = PAUSE_ITEMS[selected]
-    if item == "Restart level":
-        run.campaign.restart_level()
-        return Screen.PLAYING
-    if item == "Quit to title":
-        return Screen.TITLE
-    return Screen.PLAYING
+def _nav(event: pygame.event.Event, stick_edges: StickEdges, screen: Screen) -> Nav | None:
+    """The menu move a key or pad event makes on ``screen``, if any."""
+    return key_nav(event) or pad_nav(event, stick_edges, playing=screen is Screen.PLAYING)
+
+
+def _obey(command: Command, run: Run) -> str | None:
+    """Carry out a menu's command; a level that will not load is a sentence, not a crash."""
+    try:
+        if isinstance(command, StartLevel):
+            run.campaign = Campaign(command.level, run.campaign.tuning, run.campaign.loader)
+        elif isinstance(command, RestartLevel):
+            run.campaign.restart_level()
+    except LevelError as error:
+        return str(error)
+    return None
+
+
+def _draw_screen(target: pygame.Surface, assets: Assets, menus: Menus,
+                 entries: tuple[LevelEntry, ...], campaign: Campaign, frame: int,
+                 using_pad: bool) -> None:
+    """The screen that is up: a menu in place of the world, or over it."""
+    if menus.screen is Screen.TITLE:
+        draw_title(target, assets, frame, menus.title_item, entries, pad=using_pad)
+    elif menus.screen is Screen.LEVEL_SELECT:
+        draw_level_select(target, assets, frame, entries, menus.level_item)
+    elif menus.screen is Screen.PAUSED:
+        draw_pause(target, assets, menus.pause_item)
+    elif menus.screen is Screen.ENDED:
+        if campaign.outcome is Outcome.WON:
+            draw_win(target, assets, campaign)
+        else:
+            draw_game_over(target, assets, campaign)
 
 
 def _last_update_ms(run: Run) -> float:
