@@ -64,10 +64,10 @@ def watched_run(tmp_path: Path, new_text: str) -> dict[str, object]:
     inputs = tmp_path / "in.txt"
     inputs.write_text("0 -left\n")
     game = subprocess.Popen(
-        [sys.executable, "-m", "game", "--level", str(level), "--watch", "--ticks", "150",
+        [sys.executable, "-m", "game", "--level", str(level), "--watch", "--ticks", "400",
          "--inputs", str(inputs), "--report", str(report)],
         cwd=ROOT, env=env, stderr=subprocess.PIPE, text=True)
-    time.sleep(1.0)
+    time.sleep(2.5)  # let the game start (it runs 400 ticks, about 6.7 s)
     level.write_text(new_text, encoding="utf-8")
     _, errors = game.communicate(timeout=60)
     assert game.returncode == 0, errors
@@ -84,4 +84,4 @@ def test_saving_the_level_while_it_runs_reloads_it(tmp_path: Path) -> None:
 
 def test_a_broken_save_keeps_the_old_level_running(tmp_path: Path) -> None:
     report = watched_run(tmp_path, "<map><broken")
-    assert report["enemies_left"] == 1 and report["ticks"] == 150
+    assert report["enemies_left"] == 1 and report["ticks"] == 400
