@@ -56,18 +56,35 @@ def test_a_reload_that_walls_the_player_in_starts_it_at_the_spawn() -> None:
     assert campaign.world.player.box == walled.spawn
 
 
+def _hand_over(fifo: Path, data: bytes, game: subprocess.Popen[str]) -> None:
+    """Write ``data`` into a FIFO as soon as the game opens it (never blocking forever)."""
+    deadline = time.monotonic() + 60
+    while True:
+        try:
+            fd = os.open(fifo, os.O_WRONLY | os.O_NONBLOCK)
+            break
+        except OSError:  # no reader yet
+            assert game.poll() is None, "the game ended before reading its input script"
+            assert time.monotonic() < deadline, "the game never opened its input script"
+            time.sleep(0.01)
+    os.set_blocking(fd, True)
+    with os.fdopen(fd, "wb") as pipe:
+        pipe.write(data)
+
+
 def watched_run(tmp_path: Path, new_text: str) -> dict[str, object]:
     """Play a level in a (dummy) window with --watch and save ``new_text`` over it mid-run."""
     level = write_tmx(tmp_path, ROWS)
     report = tmp_path / "report.json"
     env = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy"}
-    inputs = tmp_path / "in.txt"
-    inputs.write_text("0 -left\n")
+    inputs = tmp_path / "in.fifo"
+    os.mkfifo(inputs)
     game = subprocess.Popen(
         [sys.executable, "-m", "game", "--level", str(level), "--watch", "--ticks", "400",
          "--inputs", str(inputs), "--report", str(report)],
         cwd=ROOT, env=env, stderr=subprocess.PIPE, text=True)
-    time.sleep(2.5)  # let the game start (it runs 400 ticks, about 6.7 s)
+    _hand_over(inputs, b"0 -left\n", game)  # the game has opened its input script...
+    time.sleep(1.5)                        # ...and then loads the level and opens a window
     level.write_text(new_text, encoding="utf-8")
     _, errors = game.communicate(timeout=60)
     assert game.returncode == 0, errors
