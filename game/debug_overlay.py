@@ -7,7 +7,8 @@ counters the stats are read from, and never moves a sprite.
 
 What it teaches (read the colours):
   * **Hitboxes are not sprites.** The 1 px outlines are the float boxes the physics uses
-    (player green, enemies red, coins yellow, exits cyan); the art around them is decoration.
+    (player green, enemies red, coins yellow, exits and checkpoints cyan, moving
+    platforms pink); the art around them is decoration.
   * **Broad phase.** The outlined tile shapes are the ones in the cells around each body:
     Solid grey, OneWay orange, Hazard magenta. Only these are ever tested; the rest of the
     map costs nothing.
@@ -35,7 +36,8 @@ from game.world import PLAYER_KEY, ContactKey, World
 PLAYER_COLOR: Color = (80, 255, 96)
 ENEMY_COLOR: Color = (255, 64, 64)
 COIN_COLOR: Color = (255, 232, 64)
-EXIT_COLOR: Color = (64, 240, 255)
+EXIT_COLOR: Color = (64, 240, 255)  # exits and checkpoints
+PLATFORM_COLOR: Color = (255, 120, 200)
 SHAPE_COLORS: dict[TileKind, Color] = {
     TileKind.SOLID: (225, 225, 235),
     TileKind.ONE_WAY: (255, 150, 40),
@@ -122,6 +124,10 @@ def _draw_outlines(target: pygame.Surface, world: World) -> None:
         pygame.draw.rect(target, COIN_COLOR, _screen_rect(coin.box, camera), width=1)
     for enemy in world.enemies:
         pygame.draw.rect(target, ENEMY_COLOR, _screen_rect(enemy.box, camera), width=1)
+    for platform in world.platforms:
+        pygame.draw.rect(target, PLATFORM_COLOR, _screen_rect(platform.box, camera), width=1)
+    for flag in world.checkpoints:
+        pygame.draw.rect(target, EXIT_COLOR, _screen_rect(flag.box, camera), width=1)
     pygame.draw.rect(target, PLAYER_COLOR, _screen_rect(world.player.box, camera), width=1)
 
 
