@@ -45,6 +45,7 @@ COIN_PHASE_COL_PX = 16
 
 ENEMY_WALK_FPS = 4
 ENEMY_WALK_FRAMES = (0, 1)
+SQUASHED_FRAME = 2
 HOPPER_SITTING_FRAME = 3
 HOPPER_AIRBORNE_FRAME = 4
 
@@ -224,6 +225,8 @@ def _draw_sprites(target: pygame.Surface, world: World, assets: Assets, frame: i
             index = animation_index(frame, ENEMY_WALK_FPS, ENEMY_WALK_FRAMES, number)
         _blit_anchored(target, assets.enemy_frames[index], enemy.box, camera,
                        flip=enemy.direction < 0)
+    for squash in world.squashed:
+        _blit_anchored(target, assets.enemy_frames[SQUASHED_FRAME], squash.box, camera)
     player = world.player
     blink_off = player.invulnerable and (frame * 2 * BLINK_HZ // ANIMATION_HZ) % 2 == 1
     if not blink_off:

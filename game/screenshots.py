@@ -37,7 +37,7 @@ class Shot:
 SHOTS_TO_TAKE = (
     Shot("first-steps", "levels/01-first-steps.tmx", 400, debug=False),
     Shot("debug-overlay", "levels/01-first-steps.tmx", 200, debug=True),
-    Shot("debug-stomp", "levels/01-first-steps.tmx", 300, debug=True),
+    Shot("debug-stomp", "levels/01-first-steps.tmx", 312, debug=True),
     Shot("moving-parts", "levels/04-moving-parts.tmx", 1157, debug=True),
 )
 

@@ -61,6 +61,7 @@ def _push_needed(pusher: Box, body: Box, axis: str, step: float) -> float:
     return pusher.bottom - body.top if step > 0 else pusher.top - body.bottom
 
 
+SQUASH_TICKS = 20  # how long a stomped enemy stays on screen, flattened
 SKY_LIMIT_PX = 1_000_000.0  # how far above the map a body may fly before the sky stops it
 
 
@@ -84,6 +85,14 @@ class Event:
     kind: EventKind
     value: int = 0
     where: Box | None = None
+
+
+@dataclass(frozen=True)
+class Squash:
+    """Where an enemy was stomped, kept a few ticks so the renderer can show it flattened."""
+
+    box: Box
+    ticks_left: int
 
 
 @dataclass
@@ -117,6 +126,7 @@ class World:
         self.checkpoints: pygame.sprite.Group[Checkpoint] = pygame.sprite.Group(
             Checkpoint(box) for box in self.level.checkpoints)
         self.checkpoint_reached: int | None = None
+        self.squashed: list[Squash] = []  # stomped enemies, shown flat for a moment
         # A spawn drawn inside a wall is moved to the nearest free place before play starts.
         self.spawn = nearest_free_place(self.grid, self.level.spawn)
         self.player = Player(self.spawn, self.tuning)
@@ -148,6 +158,9 @@ class World:
         dt = self.tuning.tick_s
         self.grid.stats.reset()
         started = time.perf_counter()
+
+        self.squashed = [Squash(s.box, s.ticks_left - 1) for s in self.squashed
+                         if s.ticks_left > 1]
 
         # 1. Intent: entities choose velocities; none of them moves itself.
         if self.player.decide(held, self.tuning):
@@ -208,6 +221,7 @@ class World:
                 enemy = self.enemy_by_number[number]
                 if self._came_from_above(before[self.player], before[enemy]):
                     enemy.kill()
+                    self.squashed.append(Squash(enemy.box, SQUASH_TICKS))
                     self.player.bounce(self.tuning.stomp_bounce_px_s)
                     events.append(Event(EventKind.STOMP, 1, enemy.box))
                 elif not self.player.invulnerable:
