@@ -49,6 +49,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from itertools import combinations
 from typing import Generic, NamedTuple
 
 from game.aabb import Box
@@ -140,15 +141,51 @@ class SpatialGrid(Generic[K]):
                 del self._cells[cell]  # empty cells go, so memory follows the items
 
     def move(self, key: K, box: Box) -> None:
-        check_box(box)
-        if key not in self._boxes:
-            raise KeyError(key)
         old = self._ranges.get(key)
-        if old is not None and old == self.cell_range(box):
-            self._boxes[key] = box  # same cells: nothing to re-file
+        if old is None:  # unknown, or kept aside as oversize: file it from scratch
+            if key not in self._boxes:
+                raise KeyError(key)
+            check_box(box)
+            self.remove(key)
+            self.insert(key, box)
             return
-        self.remove(key)
-        self.insert(key, box)
+        # ``move`` runs for every item every tick: no CellRange is built for the check.
+        size = self.cell_size_px
+        x, y, w, h = box
+        try:
+            new = (math.floor(x / size), math.floor(y / size),
+                   math.floor((x + w) / size), math.floor((y + h) / size))
+        except (ValueError, OverflowError):  # floor() refuses NaN and infinities
+            check_box(box)
+            raise
+        if new == old:
+            self._boxes[key] = box  # same cells, the usual case: nothing to re-file
+            return
+        check_box(box)
+        new_range = CellRange(*new)
+        if new_range.cell_count > self.max_cells_per_item:
+            self.remove(key)
+            self.insert(key, box)
+            return
+        self._boxes[key] = box
+        self._ranges[key] = new_range
+        self._refile(key, old, new_range)
+
+    def _refile(self, key: K, old: CellRange, new: CellRange) -> None:
+        """Take ``key`` out of the cells it left and put it in the cells it entered.
+
+        A small move shares most cells with the last tick's, so only the edges change.
+        """
+        cells = self._cells
+        for cell in old.cells():
+            if not new.holds(cell):
+                keys = cells[cell]
+                keys.remove(key)
+                if not keys:
+                    del cells[cell]
+        for cell in new.cells():
+            if not old.holds(cell):
+                cells.setdefault(cell, set()).add(key)
 
     def query(self, box: Box) -> set[K]:
         check_box(box)
@@ -177,16 +214,26 @@ class SpatialGrid(Generic[K]):
     def pairs(self) -> set[tuple[K, K]]:
         found: set[tuple[K, K]] = set()
         stats = self.stats
-        for cell, keys in self._cells.items():
-            stats.cells_visited += 1
-            members = list(keys)
-            for i, key in enumerate(members):
-                for other in members[i + 1:]:
-                    if self._home_cell(key, other) != cell:
-                        continue  # this pair is tested in another cell they share
-                    stats.pair_tests += 1
-                    if self._boxes[key].overlaps(self._boxes[other]):
-                        found.add(pair_of(key, other))
+        boxes, ranges = self._boxes, self._ranges
+        stats.cells_visited += len(self._cells)
+        tests = 0
+        for (col, row), keys in self._cells.items():
+            if len(keys) < 2:
+                continue  # most cells hold one item: nothing to pair
+            for key, other in combinations(keys, 2):
+                mine, theirs = ranges[key], ranges[other]
+                # Their home cell (see _home_cell), inlined: this runs for every candidate.
+                if (max(mine.first_col, theirs.first_col) != col
+                        or max(mine.first_row, theirs.first_row) != row):
+                    continue  # this pair is tested in another cell they share
+                tests += 1
+                ax, ay, aw, ah = boxes[key]
+                bx, by, bw, bh = boxes[other]
+                # Box.overlaps, inlined: this is the innermost loop of the broad phase.
+                if (ax < bx + bw and bx < ax + aw and ay < by + bh and by < ay + ah
+                        and aw > 0 < ah and bw > 0 < bh):
+                    found.add(pair_of(key, other))
+        stats.pair_tests += tests
         # Oversize items meet everything: the filed items, then each other once.
         oversize = list(self._oversize)
         for i, key in enumerate(oversize):

@@ -125,13 +125,35 @@ class TileGrid:
                 yield col, row
 
     def shapes_in(self, region: Box) -> list[TileShape]:
-        """The shapes whose box overlaps the region (strictly), counting the work done."""
+        """The shapes whose box overlaps the region (strictly), counting the work done.
+
+        The cells of :meth:`cells_covering` and the test of :meth:`Box.overlaps`, written
+        out inline: every body calls this several times a tick, so it builds no generator,
+        makes no method call per shape and updates the counts once.
+        """
+        x, y, w, h = region
+        if not (w > 0 and h > 0):  # empty (or NaN): overlaps nothing
+            return []
+        right, bottom = x + w, y + h
+        try:
+            first_col = max(0, math.floor(x / self.tile_w))
+            last_col = min(self.cols - 1, math.ceil(right / self.tile_w) - 1)
+            first_row = max(0, math.floor(y / self.tile_h))
+            last_row = min(self.rows - 1, math.ceil(bottom / self.tile_h) - 1)
+        except (ValueError, OverflowError):  # floor() and ceil() refuse NaN and infinities
+            return []
         found: list[TileShape] = []
-        stats = self.stats
-        for cell in self.cells_covering(region):
-            stats.cells_visited += 1
-            for shape in self._cells.get(cell, ()):
-                stats.shapes_tested += 1
-                if shape.box.overlaps(region):
-                    found.append(shape)
+        cells = self._cells
+        visited = tested = 0
+        for row in range(first_row, last_row + 1):
+            for col in range(first_col, last_col + 1):
+                visited += 1
+                for shape in cells.get((col, row), ()):
+                    tested += 1
+                    sx, sy, sw, sh = shape.box
+                    if (sx < right and x < sx + sw and sy < bottom and y < sy + sh
+                            and sw > 0 and sh > 0):
+                        found.append(shape)
+        self.stats.cells_visited += visited
+        self.stats.shapes_tested += tested
         return found

@@ -1,0 +1,62 @@
+"""The benchmark: what each collision method costs, how often it is wrong, and what to choose.
+
+Run ``python -m game.bench`` (a few minutes) or ``python -m game.bench --quick`` (under a
+minute); the CSVs, the PNG charts, the targets and a README that reads the charts go to
+``assets/charts/`` unless ``--out DIR`` says otherwise; ``--check`` makes a failed target
+exit with status 1. matplotlib is needed here only: the game never imports this package.
+
+Read it in this order, one concept per module:
+
+* :mod:`~game.bench.timing`: fair timing (interleaved rounds, medians, the collector off).
+* :mod:`~game.bench.narrow`: chart 1, cost against error of the narrow-phase tests.
+* :mod:`~game.bench.tunnelling`: chart 2, fast bodies against thin walls.
+* :mod:`~game.bench.broad`: chart 3, finding the pairs among N movers.
+* :mod:`~game.bench.grid_cells`: the spatial grid's cell size.
+* :mod:`~game.bench.walls`: chart 4, one body against a growing tile map.
+* :mod:`~game.bench.caching`: chart 5, ``obj.rect`` against copies of it.
+* :mod:`~game.bench.game_step`: the game's own collision step per tick.
+* :mod:`~game.bench.targets`: the ratios the project promises, checked.
+* :mod:`~game.bench.run` runs them all; :mod:`~game.bench.records`,
+  :mod:`~game.bench.charts`, :mod:`~game.bench.machine`, :mod:`~game.bench.sizes` and
+  :mod:`~game.bench.readme` are the plumbing.
+
+The thresholds the game uses (:mod:`game.methods`) cite the committed run of this bench.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+from collections.abc import Sequence
+from pathlib import Path
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the bench; 0 when done, 1 with ``--check`` and a failed target, 2 bad usage."""
+    os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+    os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
+    from game.bench.run import DEFAULT_OUT, run
+    from game.bench.sizes import FULL, QUICK
+
+    parser = argparse.ArgumentParser(
+        prog="python -m game.bench",
+        description="Measure the collision methods, draw the charts, check the targets.")
+    parser.add_argument("--quick", action="store_true",
+                        help="fewer rounds and a smaller top N: under a minute")
+    parser.add_argument("--out", type=Path, default=DEFAULT_OUT, metavar="DIR",
+                        help=f"where the CSVs and charts go (default {DEFAULT_OUT})")
+    parser.add_argument("--check", action="store_true",
+                        help="exit with status 1 if any target fails")
+    args = parser.parse_args(argv)
+    sizes = QUICK if args.quick else FULL
+    print(f"game.bench: {sizes.name} run, writing to {args.out}", flush=True)
+    _, checked = run(sizes, args.out, echo=lambda line: print(line, flush=True))
+    width = max(len(t.claim) for t in checked)
+    for target in checked:
+        _, measured, limit, _ = target.row()
+        note = f"  [{target.note}]" if target.note else ""
+        print(f"  {'pass' if target.passed else 'FAIL'}  {target.claim:<{width}}  "
+              f"{measured:>16}  (limit {limit}){note}")
+    failed = [t for t in checked if not t.passed]
+    print(f"{len(checked) - len(failed)} of {len(checked)} targets met.")
+    return 1 if args.check and failed else 0
