@@ -8,8 +8,9 @@ The order of :meth:`CrateScene.step`, written once:
 
 1. **Drift**: each crate moves by its velocity times ``dt``. Nothing is checked yet, so
    crates may now overlap each other or a wall.
-2. **Broad phase**: the structure (a :class:`~game.spatial_grid.SpatialGrid` unless you
-   pass another) learns the new boxes and returns the overlapping pairs.
+2. **Broad phase**: the structure learns the new boxes and returns the overlapping pairs.
+   Unless you pass one, the scene picks it by its size with :mod:`game.methods`: brute
+   force for a handful of crates, a spatial grid past the measured crossover.
 3. **Crates**: in a fixed order (sorted pairs, so a run is repeatable), each pair still
    overlapping is pushed apart by mass and trades momentum (:mod:`game.response`).
 4. **Walls**: the arena's four walls are static bodies, thick enough that nothing crosses
@@ -42,8 +43,8 @@ from dataclasses import dataclass
 from game.aabb import Box
 from game.brute_force import BroadPhase, BroadPhaseStats
 from game.contacts import ContactChanges, ContactTracker
+from game.methods import build_broad_phase
 from game.response import ZERO, PointMass, Vec, exchange, push_out, separate
-from game.spatial_grid import SpatialGrid
 
 
 @dataclass(frozen=True)
@@ -61,7 +62,6 @@ class CrateTuning:
     restitution: float = 0.9             # crate on crate: 1 perfectly bouncy, 0 not at all
     friction: float = 0.2                # crate on crate, Coulomb coefficient
     wall_restitution: float = 1.0        # walls have no friction
-    cell_size_px: float = 32.0           # of the default spatial grid: about one crate
 
     @property
     def spawn_slot_px(self) -> float:
@@ -103,7 +103,8 @@ class CrateScene:
         self.crates = {crate.key: crate for crate in crates}
         self.broad_phase: BroadPhase[int] = (
             broad_phase if broad_phase is not None
-            else SpatialGrid(cell_size_px=self.tuning.cell_size_px))
+            else build_broad_phase(len(self.crates),
+                                   (self.tuning.crate_min_px + self.tuning.crate_max_px) / 2))
         for crate in self.crates.values():
             self.broad_phase.insert(crate.key, crate.box)
         self.contacts: ContactTracker[int] = ContactTracker()
