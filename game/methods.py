@@ -17,7 +17,7 @@ plain brute force is both simpler and faster.
 >>> type(build_broad_phase(5_000, body_size_px=16)).__name__
 'SpatialGrid'
 >>> grid_cell_size_px(16)
-48.0
+32.0
 """
 
 from __future__ import annotations
@@ -29,8 +29,8 @@ from game.spatial_grid import SpatialGrid
 
 WALLS: Final = "tile_grid"
 """Bodies meet walls through :meth:`TileGrid.shapes_in` and the swept axis moves: in the
-committed run the lookup took 0.985x as long on an 800x160 map as on a 200x40 one, and was
-18.5x faster than ``spritecollide`` over all 2,413 walls of the 200x40 map
+committed run the lookup took 1.00x as long on an 800x160 map as on a 200x40 one, and was
+42.0x faster than ``spritecollide`` over all 2,413 walls of the 200x40 map
 (``assets/charts/walls.csv``, ``assets/charts/targets.csv``)."""
 
 TRIGGERS: Final = "groupcollide"
@@ -44,15 +44,15 @@ MOVES: Final = "swept"
 from 1.75 tiles per tick (T + S = 28 px) and 70.8 % of flights at 6 tiles per tick in the
 committed run, while the swept test misses none (``assets/charts/tunnelling.csv``)."""
 
-BROAD_PHASE_CROSSOVER_N: Final = 20
-"""The grid beats brute force (every pair tested in Python) from N = 20 movers up in the
+BROAD_PHASE_CROSSOVER_N: Final = 10
+"""The grid beats brute force (every pair tested in Python) from N = 10 movers up in the
 committed run (``assets/charts/broad_phase.csv``, marked on ``broad_phase.png``). The two
 lines run close between 10 and 30, so runs place it anywhere there; below it, brute force
 is as fast and has no structure to keep up to date."""
 
-GRID_CELL_SIZE_FACTOR: Final = 3.0
+GRID_CELL_SIZE_FACTOR: Final = 2.0
 """A grid cell is this many typical body sizes across: the fastest of the factors 1 to 6
-tried in the committed run, 16.1 ms per frame for 2,000 movers against 28.3 ms with cells
+tried in the committed run, 5.80 ms per frame for 2,000 movers against 8.20 ms with cells
 one body across (``assets/charts/grid_cells.csv``)."""
 
 
