@@ -67,3 +67,17 @@ def test_hazard_tiles_use_their_partial_collision_rectangle() -> None:
     for shape in spikes:
         assert shape.box.h == 8 and shape.box.w == 14           # drawn in Tiled: (1, 8) 14x8
         assert shape.box.x == shape.col * 16 + 1 and shape.box.y == shape.row * 16 + 8
+
+
+def test_the_whole_campaign_is_won_from_the_first_level_to_the_win() -> None:
+    campaign = Campaign(FIRST_LEVEL)
+    start_tick, script = 0, InputScript.load(SCRIPTS / f"{FIRST_LEVEL.stem}.txt")
+    level = campaign.world.level.path
+    while campaign.outcome is Outcome.RUNNING:
+        campaign.tick(script.held_at(campaign.ticks - start_tick))
+        if campaign.world.level.path != level:       # on to the next level and its script
+            level, start_tick = campaign.world.level.path, campaign.ticks
+            script = InputScript.load(SCRIPTS / f"{level.stem}.txt")
+        assert campaign.ticks < 60 * 60 * 5
+    assert campaign.outcome is Outcome.WON
+    assert campaign.levels_completed == len(SHIPPED) and campaign.deaths == 0
