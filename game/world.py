@@ -47,7 +47,7 @@ from game.movement import (
     slide_past_ceiling_corner,
     touching,
 )
-from game.pickups import Checkpoint, Coin, Exit
+from game.pickups import Checkpoint, Coin, Exit, Trigger
 from game.platforms import Platform, SolidsWithPlatforms
 from game.player import Player
 from game.tilegrid import TileKind
@@ -104,7 +104,7 @@ class TickStats:
     collision_s: float = 0.0
 
 
-def crossed(body: Body, thing: Coin | Exit | Checkpoint | Enemy) -> bool:
+def crossed(body: Body, thing: Trigger | Enemy) -> bool:
     """``collided=`` for pygame.sprite: did the body's path this tick overlap the thing?"""
     return body.travelled_through(thing.box)
 
