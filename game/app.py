@@ -37,7 +37,6 @@ from game.report import Timing, build_report
 from game.world import Event
 
 HEADLESS_TICK_LIMIT = 60 * 60 * 60  # an hour of game time: a run with no --ticks still ends
-WINDOW_SCALE = 3                     # initial window size: the 320x180 view times this
 TARGET_FPS = 60
 EXIT_OK, EXIT_BAD_FILE, EXIT_USAGE = 0, 1, 2
 
@@ -89,6 +88,11 @@ class Run:
         events = self.campaign.tick(held)
         self.timing.add(time.perf_counter() - started, self.campaign.world.stats.collision_s)
         return events
+
+    @property
+    def last_update_ms(self) -> float:
+        """How long the last tick took, for the debug overlay (0 before the first)."""
+        return self.timing.update_s[-1] * 1000.0 if self.timing.update_s else 0.0
 
     def finished(self) -> bool:
         ticks = self.args.ticks
@@ -156,7 +160,7 @@ def run_headless(game_run: Run) -> int:
     if game_run.args.screenshot:
         from game.window import render_frame
 
-        last_ms = game_run.timing.update_s[-1] * 1000.0 if game_run.timing.update_s else 0.0
-        frame = render_frame(game_run.campaign, debug=game_run.args.debug, update_ms=last_ms)
+        frame = render_frame(game_run.campaign, debug=game_run.args.debug,
+                             update_ms=game_run.last_update_ms)
     game_run.write_outputs(frame)
     return EXIT_OK

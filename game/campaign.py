@@ -14,7 +14,7 @@ from pathlib import Path
 from game.inputs import Actions
 from game.level import Level
 from game.levels import load_level
-from game.movement import ground_under, penetration_depth
+from game.movement import penetration_depth
 from game.tuning import Tuning
 from game.world import Event, EventKind, World
 
@@ -87,11 +87,11 @@ class Campaign:
         old = self.world.player
         self.world = World(level, self.tuning)
         player = self.world.player
-        if penetration_depth(level.grid, old.box) == 0.0 and old.box.top < level.grid.height_px:
+        if (penetration_depth(self.world.solids, old.box) == 0.0
+                and old.box.top < level.grid.height_px):
             player.teleport(old.box)
             player.vx, player.vy, player.facing = old.vx, old.vy, old.facing
-            player.standing_on = ground_under(level.grid, old.box)
-            player.on_ground = player.standing_on is not None
+            self.world.probe_ground(player)
 
     def restart_level(self) -> None:
         """Start the current level again from its spawn (the pause menu's Restart)."""

@@ -45,8 +45,3 @@ class FixedStep:
         else:
             self.accumulator_s = max(0.0, self.accumulator_s - ticks * self.tick_s)
         return ticks
-
-    @property
-    def alpha(self) -> float:
-        """How far into the next tick real time has got (0..1), for smooth drawing."""
-        return min(1.0, self.accumulator_s / self.tick_s)

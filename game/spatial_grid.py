@@ -222,7 +222,8 @@ class SpatialGrid(Generic[K]):
                 continue  # most cells hold one item: nothing to pair
             for key, other in combinations(keys, 2):
                 mine, theirs = ranges[key], ranges[other]
-                # Their home cell (see _home_cell), inlined: this runs for every candidate.
+                # Their home cell, the first cell both are filed under: the pair is tested
+                # there and nowhere else. Inlined: this runs for every candidate.
                 if (max(mine.first_col, theirs.first_col) != col
                         or max(mine.first_row, theirs.first_row) != row):
                     continue  # this pair is tested in another cell they share
@@ -244,8 +245,3 @@ class SpatialGrid(Generic[K]):
                     found.add(pair_of(key, other))
         return found
 
-    def _home_cell(self, a: K, b: K) -> Cell:
-        """The first cell both items are filed under: where their pair is tested."""
-        range_a, range_b = self._ranges[a], self._ranges[b]
-        return (max(range_a.first_col, range_b.first_col),
-                max(range_a.first_row, range_b.first_row))

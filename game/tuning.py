@@ -11,8 +11,8 @@ never typed in twice.
 >>> t = Tuning().with_map_properties({"gravity": 100.0, "title": "ignored"})
 >>> t.gravity_px_s2
 100.0
->>> round(Tuning().run_speed_px_tick, 3)
-1.5
+>>> Tuning().coyote_ticks                # 0.1 s at 60 ticks a second
+6
 """
 
 from __future__ import annotations
@@ -53,10 +53,6 @@ class Tuning:
     enemy_height_px: int = 12
     start_lives: int = 3
     tick_s: float = TICK_S
-
-    @property
-    def run_speed_px_tick(self) -> float:
-        return self.run_speed_px_s * self.tick_s
 
     @property
     def invulnerable_ticks(self) -> int:

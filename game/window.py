@@ -182,7 +182,7 @@ def play_in_window(run: Run) -> int:
         target = pygame.display.get_surface()
         if menus.screen not in MENU_SCREENS:
             render_frame(run.campaign, debug=debug, assets=assets, frame=frame,
-                         fps=clock.get_fps(), update_ms=_last_update_ms(run))
+                         fps=clock.get_fps(), update_ms=run.last_update_ms)
         _draw_screen(target, assets, menus, entries, run.campaign, frame, using_pad)
         if reload_error is not None:
             draw_error_banner(target, assets, RELOAD_FAILED + reload_error)
@@ -224,6 +224,3 @@ def _draw_screen(target: pygame.Surface, assets: Assets, menus: Menus,
         else:
             draw_game_over(target, assets, campaign)
 
-
-def _last_update_ms(run: Run) -> float:
-    return run.timing.update_s[-1] * 1000.0 if run.timing.update_s else 0.0

@@ -144,8 +144,7 @@ class World:
         self.contacts: ContactTracker[ContactKey] = ContactTracker()
         self.stats = TickStats()
         self.max_penetration_px = 0.0
-        self.player.standing_on = ground_under(self.solids, self.player.box)
-        self.player.on_ground = self.player.standing_on is not None
+        self.probe_ground(self.player)
         self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
 
     def bodies(self) -> list[Body]:
@@ -185,10 +184,7 @@ class World:
         # 4. y pass: the same along y, then probe one pixel below the feet.
         for body in bodies:
             self._move_y(body, body.vy * dt)
-            body.standing_on = ground_under(self.solids, body.box,
-                                            through_one_way=body.dropping_through)
-            body.on_ground = body.standing_on is not None
-            body.riding = self.solids.platform_of(body.standing_on)
+            self.probe_ground(body)
 
         # 5. React: each body reads what its own moves hit.
         for body in bodies:
@@ -250,6 +246,13 @@ class World:
         # 10. Camera: follow the player, inside the map.
         self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
         return events
+
+    def probe_ground(self, body: Body) -> None:
+        """The one-pixel probe under the feet: what the body stands (or rides) on, if anything."""
+        body.standing_on = ground_under(self.solids, body.box,
+                                        through_one_way=body.dropping_through)
+        body.on_ground = body.standing_on is not None
+        body.riding = self.solids.platform_of(body.standing_on)
 
     def _player_contacts(self) -> set[tuple[ContactKey, ContactKey]]:
         """The pairs (player, thing) whose boxes the player's path overlapped this tick."""
