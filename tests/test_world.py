@@ -12,7 +12,6 @@ import pytest
 from game.aabb import Box
 from game.campaign import Campaign, Outcome
 from game.inputs import NOTHING, Action
-from game.level import Level
 from game.loop import FixedStep
 from game.tuning import Tuning
 from game.world import EventKind, World
@@ -148,7 +147,7 @@ def test_touching_a_hazard_costs_a_life() -> None:
 
 def test_the_exit_completes_the_level_and_the_last_one_wins() -> None:
     first = level_from_ascii(["       ", " P   D ", "#######"])
-    first = Level(**{**first.__dict__, "next_level": Path("second.tmx")})
+    first = replace(first, next_level=Path("second.tmx"))
     second = level_from_ascii(["       ", " P  D  ", "#######"])
     levels = {Path("first.tmx"): first, Path("second.tmx"): second}
     campaign = Campaign(Path("first.tmx"), loader=levels.__getitem__)
@@ -268,7 +267,7 @@ def test_a_hopper_patrols_in_hops_and_rests_between_them() -> None:
         "####################",
     ])
     spec = level.enemies[0]
-    level = Level(**{**level.__dict__, "enemies": (replace(spec, kind="hopper"),)})
+    level = replace(level, enemies=(replace(spec, kind="hopper"),))
     world = World(level, replace(INSTANT, enemy_speed_px_s=60.0))
     hopper = next(iter(world.enemies))
     airborne, xs_on_ground = 0, set()
