@@ -1,6 +1,6 @@
 """Tile Hopper: a pygame platformer whose code teaches 2D collision detection.
 
-Start reading at :mod:`game.world` (one tick, top to bottom) and :mod:`game.movement`
+Start reading at :mod:`game.sim.world` (one tick, top to bottom) and :mod:`game.sim.movement`
 (the swept x and y passes). The README maps every technique to its module.
 """
 

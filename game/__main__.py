@@ -1,7 +1,7 @@
-"""``python -m game``: play, or run a scripted headless game (see :mod:`game.cli`)."""
+"""``python -m game``: play, or run a scripted headless game (see :mod:`game.app.cli`)."""
 
 import sys
 
-from game.cli import main
+from game.app.cli import main
 
 sys.exit(main())

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from game.aabb import Box
-from game.level import CoinSpec, EnemySpec, Level
-from game.tilegrid import TileGrid, TileKind, TileShape
+from game.collision.aabb import Box
+from game.sim.level import CoinSpec, EnemySpec, Level
+from game.sim.tilegrid import TileGrid, TileKind, TileShape
 
 TILE = 16
 KINDS = {"#": TileKind.SOLID, "-": TileKind.ONE_WAY, "^": TileKind.HAZARD}

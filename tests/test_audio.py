@@ -16,9 +16,9 @@ from pathlib import Path
 import pygame
 import pytest
 
-from game import synth
-from game.audio import EFFECT_NAMES, MUSIC_FILE, SOUND_FOR_EVENT, SOUNDS, Audio
-from game.world import EventKind
+from game.app.audio import EFFECT_NAMES, MUSIC_FILE, SOUND_FOR_EVENT, SOUNDS, Audio
+from game.sim.world import EventKind
+from game.tools import synth
 
 QUIET = 0.002 * synth.FULL_SCALE  # a sample this small is inaudible: about -54 dBFS
 
@@ -66,7 +66,7 @@ def test_synthesis_gives_the_same_bytes_every_time(sounds: dict[str, bytes]) -> 
 def test_shipped_sounds_match_the_generator(sounds: dict[str, bytes]) -> None:
     shipped = {path.name: path.read_bytes() for path in SOUNDS.glob("*.wav")}
     stale = sorted(name for name in sounds if shipped.get(name) != sounds[name])
-    assert not stale, f"{stale} are out of date: run python -m game.synth"
+    assert not stale, f"{stale} are out of date: run python -m game.tools.synth"
 
 
 def test_every_sound_the_game_plays_is_made(sounds: dict[str, bytes]) -> None:
@@ -227,7 +227,7 @@ def test_a_missing_file_silences_only_that_sound(tmp_path: Path,
         assert not audio.silent
         assert "jump.wav" in audio.status and "music.wav" in audio.status
         assert "coin.wav" not in audio.status
-        assert "python -m game.synth" in audio.status
+        assert "python -m game.tools.synth" in audio.status
         audio.play("jump")
         audio.play("coin")
         audio.start_music()

@@ -14,14 +14,14 @@ from pathlib import Path
 
 import pytest
 
-from game import methods
 from game.bench import broad, game_step, main, narrow, targets, tunnelling, walls
 from game.bench.records import COLUMNS, Row, read_csv
 from game.bench.run import CHARTS, run
 from game.bench.sizes import TINY
 from game.bench.timing import Case, interleaved, percentile
-from game.brute_force import BruteForce
-from game.spatial_grid import SpatialGrid
+from game.collision import methods
+from game.collision.broad.brute_force import BruteForce
+from game.collision.broad.spatial_grid import SpatialGrid
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 

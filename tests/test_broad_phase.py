@@ -13,11 +13,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from game.aabb import Box
-from game.brute_force import BroadPhase, BruteForce, pair_of
-from game.quadtree import Quadtree, quadrants
-from game.sort_and_sweep import SortAndSweep
-from game.spatial_grid import SpatialGrid
+from game.collision.aabb import Box
+from game.collision.broad.brute_force import BroadPhase, BruteForce, pair_of
+from game.collision.broad.quadtree import Quadtree, quadrants
+from game.collision.broad.sort_and_sweep import SortAndSweep
+from game.collision.broad.spatial_grid import SpatialGrid
 
 CELL_PX = 16.0
 TREE_BOUNDS = Box(-256, -256, 512, 512)

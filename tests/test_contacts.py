@@ -5,8 +5,8 @@ from __future__ import annotations
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from game.contacts import Change, ContactTracker
-from game.crates import CrateScene, CrateTuning
+from game.collision.contacts import Change, ContactTracker
+from game.demos.crates import CrateScene, CrateTuning
 
 
 def test_a_pair_touching_for_100_ticks_gives_exactly_one_start_and_one_end() -> None:

@@ -9,9 +9,11 @@ import pytest
 
 GAME = Path(__file__).resolve().parent.parent / "game"
 MODULES = sorted(p for p in GAME.rglob("*.py"))
-COLLISION_MODULES = ["aabb", "circles", "sat", "masks", "composite", "swept", "tilegrid",
-                     "movement", "spatial_grid", "quadtree", "sort_and_sweep", "brute_force",
-                     "response", "contacts", "loop", "camera"]
+COLLISION_MODULES = ["collision/aabb", "collision/circles", "collision/sat", "collision/masks",
+                     "collision/composite", "collision/swept", "sim/tilegrid", "sim/movement",
+                     "collision/broad/spatial_grid", "collision/broad/quadtree",
+                     "collision/broad/sort_and_sweep", "collision/broad/brute_force",
+                     "collision/response", "collision/contacts", "sim/fixed_step", "sim/camera"]
 
 
 @pytest.mark.parametrize("path", MODULES, ids=[str(p.relative_to(GAME)) for p in MODULES])

@@ -14,8 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from game.level import Level
 from game.levels import LEVELS_DIR, load_level
+from game.sim.level import Level
 
 SHIPPED = sorted(LEVELS_DIR.glob("*.tmx"))
 

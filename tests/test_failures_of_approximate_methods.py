@@ -11,13 +11,20 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from game.aabb import Box
-from game.circles import Circle
-from game.composite import l_shape
-from game.masks import circle_mask, collide, polygon_mask
-from game.sat import Polygon, oriented_box
-from game.sat import collide as sat_collide
-from game.swept import clamp_speed, discrete_hit, position_at, steps_needed, substep_hit, sweep
+from game.collision.aabb import Box
+from game.collision.circles import Circle
+from game.collision.composite import l_shape
+from game.collision.masks import circle_mask, collide, polygon_mask
+from game.collision.sat import Polygon, oriented_box
+from game.collision.sat import collide as sat_collide
+from game.collision.swept import (
+    clamp_speed,
+    discrete_hit,
+    position_at,
+    steps_needed,
+    substep_hit,
+    sweep,
+)
 
 # ---------------------------------------------------------------------------------------------
 # One box around a shape that is not a box

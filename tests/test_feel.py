@@ -4,11 +4,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from game.aabb import Box
-from game.campaign import Campaign
-from game.inputs import NOTHING, Action, Actions
-from game.tuning import Tuning
-from game.world import EventKind, World
+from game.collision.aabb import Box
+from game.sim.campaign import Campaign
+from game.sim.inputs import NOTHING, Action, Actions
+from game.sim.tuning import Tuning
+from game.sim.world import EventKind, World
 from tests.maps import level_from_ascii
 
 RIGHT: Actions = frozenset({Action.RIGHT})

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pygame
 import pytest
 
-from game.gamepad import (
+from game.app.gamepad import (
     BUTTON_A,
     BUTTON_B,
     BUTTON_START,
@@ -23,9 +23,9 @@ from game.gamepad import (
     pad_nav,
     stick_actions,
 )
-from game.inputs import NOTHING, Action
-from game.menus import Nav
-from game.settings import Settings
+from game.app.menus import Nav
+from game.app.settings import Settings
+from game.sim.inputs import NOTHING, Action
 
 LEFT, RIGHT, UP, DOWN, JUMP = Action.LEFT, Action.RIGHT, Action.UP, Action.DOWN, Action.JUMP
 BUTTONS = Settings().button_numbers()
@@ -44,7 +44,7 @@ def axis(number: int, value: float, pad: int = 0) -> pygame.event.Event:
 
 
 class FakeJoystick:
-    """Answers the questions :func:`game.gamepad.read_pad` asks a real joystick."""
+    """Answers the questions :func:`game.app.gamepad.read_pad` asks a real joystick."""
 
     def __init__(self, axes: tuple[float, ...] = (0.0, 0.0),
                  hats: tuple[tuple[int, int], ...] = ((0, 0),), down: frozenset[int] = frozenset(),

@@ -8,10 +8,10 @@ from pathlib import Path
 
 import pytest
 
-from game.campaign import Campaign, Outcome
-from game.inputs import InputScript
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
-from game.tilegrid import TileKind
+from game.sim.campaign import Campaign, Outcome
+from game.sim.inputs import InputScript
+from game.sim.tilegrid import TileKind
 from tests.maps import write_tmx
 
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
@@ -46,7 +46,7 @@ def test_the_checker_names_the_file_and_the_fix_for_a_bad_map(tmp_path: Path) ->
 @pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
 def test_the_scripted_run_reaches_the_exit(level: Path) -> None:
     script = InputScript.load(SCRIPTS / f"{level.stem}.txt")
-    campaign = Campaign(level)
+    campaign = Campaign(level, loader=load_level)
     while campaign.levels_completed == 0 and campaign.outcome is Outcome.RUNNING:
         campaign.tick(script.held_at(campaign.ticks))
         assert campaign.ticks < 60 * 60, "the script did not reach the exit in a minute"
@@ -70,7 +70,7 @@ def test_hazard_tiles_use_their_partial_collision_rectangle() -> None:
 
 
 def test_the_whole_campaign_is_won_from_the_first_level_to_the_win() -> None:
-    campaign = Campaign(FIRST_LEVEL)
+    campaign = Campaign(FIRST_LEVEL, loader=load_level)
     start_tick, script = 0, InputScript.load(SCRIPTS / f"{FIRST_LEVEL.stem}.txt")
     level = campaign.world.level.path
     while campaign.outcome is Outcome.RUNNING:

@@ -17,11 +17,11 @@ from pathlib import Path
 
 import pytest
 
-from game.aabb import Box
-from game.level import Level
+from game.collision.aabb import Box
 from game.levels import LEVELS_DIR, LevelError, check_level, load_level
-from game.tilegrid import TileKind
-from game.tuning import Tuning
+from game.sim.level import Level
+from game.sim.tilegrid import TileKind
+from game.sim.tuning import Tuning
 
 TILESET = """<tileset firstgid="1" name="t" tilewidth="16" tileheight="16" tilecount="4"
  columns="4">{image}

@@ -9,11 +9,8 @@ from pathlib import Path
 import pygame
 import pytest
 
-from game.gamepad import BUTTON_A, BUTTON_B, BUTTON_START, STICK_Y_AXIS, StickEdges, pad_nav
-from game.inputs import Action
-from game.level import Level
-from game.levels import FIRST_LEVEL, LevelError
-from game.menus import (
+from game.app.gamepad import BUTTON_A, BUTTON_B, BUTTON_START, STICK_Y_AXIS, StickEdges, pad_nav
+from game.app.menus import (
     LEVEL_SELECT,
     PAUSE_ITEMS,
     PLAY,
@@ -36,8 +33,11 @@ from game.menus import (
     next_to_play,
     press,
 )
-from game.saves import Progress
-from game.tuning import TICK_HZ
+from game.app.saves import Progress
+from game.levels import FIRST_LEVEL, LevelError
+from game.sim.inputs import Action
+from game.sim.level import Level
+from game.sim.tuning import TICK_HZ
 from tests.maps import level_from_ascii
 
 ONE, TWO, THREE = Path("01-one.tmx"), Path("02-two.tmx"), Path("03-three.tmx")

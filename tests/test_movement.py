@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from game.aabb import Box
-from game.movement import Side, ground_under, move_x, move_y
-from game.tilegrid import TileGrid, TileKind, TileShape
+from game.collision.aabb import Box
+from game.sim.movement import Side, ground_under, move_x, move_y
+from game.sim.tilegrid import TileGrid, TileKind, TileShape
 
 T = 16
 

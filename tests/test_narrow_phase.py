@@ -14,12 +14,19 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from game.aabb import Box, rects_overlap
-from game.circles import Circle, bounding_circle, precheck_then_rect
-from game.composite import Composite, l_shape
-from game.masks import Masked, MaskStats, circle_mask, collide, contact_point, polygon_mask
-from game.sat import Polygon, oriented_box
-from game.sat import collide as sat_collide
+from game.collision.aabb import Box, rects_overlap
+from game.collision.circles import Circle, bounding_circle, precheck_then_rect
+from game.collision.composite import Composite, l_shape
+from game.collision.masks import (
+    Masked,
+    MaskStats,
+    circle_mask,
+    collide,
+    contact_point,
+    polygon_mask,
+)
+from game.collision.sat import Polygon, oriented_box
+from game.collision.sat import collide as sat_collide
 
 QUICK = settings(max_examples=150, deadline=None)
 SLOW = settings(max_examples=40, deadline=None)

@@ -5,13 +5,13 @@ from __future__ import annotations
 from dataclasses import replace
 from pathlib import Path
 
-from game.aabb import Box
-from game.campaign import Campaign
-from game.inputs import NOTHING, Action
-from game.level import Level
-from game.platforms import PlatformSpec, Route
-from game.tuning import Tuning
-from game.world import EventKind, World
+from game.collision.aabb import Box
+from game.sim.campaign import Campaign
+from game.sim.inputs import NOTHING, Action
+from game.sim.level import Level
+from game.sim.platforms import PlatformSpec, Route
+from game.sim.tuning import Tuning
+from game.sim.world import EventKind, World
 from tests.maps import level_from_ascii
 
 RIGHT = frozenset({Action.RIGHT})

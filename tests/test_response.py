@@ -8,11 +8,12 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from game.aabb import Box
-from game.brute_force import BroadPhase, BruteForce
-from game.crates import Crate, CrateScene, CrateTuning
-from game.quadtree import Quadtree
-from game.response import (
+from game.collision.aabb import Box
+from game.collision.broad.brute_force import BroadPhase, BruteForce
+from game.collision.broad.quadtree import Quadtree
+from game.collision.broad.sort_and_sweep import SortAndSweep
+from game.collision.broad.spatial_grid import SpatialGrid
+from game.collision.response import (
     DOWN,
     LEFT,
     RIGHT,
@@ -24,8 +25,7 @@ from game.response import (
     push_out,
     separate,
 )
-from game.sort_and_sweep import SortAndSweep
-from game.spatial_grid import SpatialGrid
+from game.demos.crates import Crate, CrateScene, CrateTuning
 
 SETTINGS = settings(max_examples=100, deadline=None)
 REL = 1e-9  # relative tolerance for sums of floats

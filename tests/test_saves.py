@@ -9,12 +9,12 @@ from pathlib import Path
 
 import pytest
 
-from game import saves
-from game.campaign import Campaign
-from game.inputs import NOTHING, InputScript
-from game.levels import FIRST_LEVEL
-from game.saves import Attempt, Finish, JsonFile, Progress, data_dir, progress_file
-from game.world import EventKind
+from game.app import saves
+from game.app.saves import Attempt, Finish, JsonFile, Progress, data_dir, progress_file
+from game.levels import FIRST_LEVEL, load_level
+from game.sim.campaign import Campaign
+from game.sim.inputs import NOTHING, InputScript
+from game.sim.world import EventKind
 
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
 
@@ -179,7 +179,7 @@ def test_a_long_list_of_problems_is_cut_short() -> None:
 
 
 def test_an_attempt_times_a_finished_level_and_counts_its_coins() -> None:
-    campaign = Campaign(FIRST_LEVEL)
+    campaign = Campaign(FIRST_LEVEL, loader=load_level)
     script = InputScript.load(SCRIPTS / "01-first-steps.txt")
     attempt = Attempt()
     finishes: list[Finish] = []
@@ -200,7 +200,7 @@ def test_an_attempt_times_a_finished_level_and_counts_its_coins() -> None:
 
 
 def test_an_attempt_starts_again_when_the_level_restarts() -> None:
-    campaign = Campaign(FIRST_LEVEL)
+    campaign = Campaign(FIRST_LEVEL, loader=load_level)
     attempt = Attempt()
     for _ in range(10):
         attempt.before_tick(campaign)

@@ -10,8 +10,8 @@ from typing import Any
 import pygame
 import pytest
 
-from game.inputs import Action
-from game.settings import DEFAULT_KEYS, Settings, key_code, settings_file
+from game.app.settings import DEFAULT_KEYS, Settings, key_code, settings_file
+from game.sim.inputs import Action
 
 
 @pytest.fixture

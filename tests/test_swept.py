@@ -8,8 +8,8 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from game.aabb import Box
-from game.swept import (
+from game.collision.aabb import Box
+from game.collision.swept import (
     Contact,
     clamp_speed,
     discrete_hit,

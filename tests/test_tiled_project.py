@@ -22,7 +22,7 @@ from game.levels.project import (
     PROPERTY_TYPES_FILE,
     generated_files,
 )
-from game.tuning import Tuning
+from game.sim.tuning import Tuning
 
 TILED = shutil.which("tiled")
 

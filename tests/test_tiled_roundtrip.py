@@ -18,10 +18,10 @@ from pathlib import Path
 
 import pytest
 
-from game.campaign import Campaign, Outcome
-from game.inputs import InputScript
-from game.levels import LEVELS_DIR
+from game.levels import LEVELS_DIR, load_level
 from game.levels.project import OBJECT_TYPES_FILE
+from game.sim.campaign import Campaign, Outcome
+from game.sim.inputs import InputScript
 
 TILED = shutil.which("tiled")
 SHIPPED = sorted(LEVELS_DIR.glob("*.tmx"))
@@ -70,7 +70,7 @@ def final_state(level: Path) -> dict[str, object]:
     script_path = SCRIPTS / f"{level.stem}.txt"
     script = InputScript.load(script_path) if script_path.is_file() else InputScript.parse(
         FALLBACK_SCRIPT, "fallback")
-    campaign = Campaign(level)
+    campaign = Campaign(level, loader=load_level)
     while campaign.outcome is Outcome.RUNNING and campaign.levels_completed == 0 and (
             campaign.ticks < MAX_TICKS):
         campaign.tick(script.held_at(campaign.ticks))

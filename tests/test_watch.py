@@ -9,10 +9,10 @@ import sys
 import time
 from pathlib import Path
 
-from game.aabb import Box
-from game.campaign import Campaign
-from game.inputs import NOTHING
-from game.watch import POLL_INTERVAL_S, FileWatcher, level_files
+from game.app.watch import POLL_INTERVAL_S, FileWatcher, level_files
+from game.collision.aabb import Box
+from game.sim.campaign import Campaign
+from game.sim.inputs import NOTHING
 from tests.maps import level_from_ascii, write_tmx
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -9,12 +9,12 @@ from pathlib import Path
 
 import pytest
 
-from game.aabb import Box
-from game.campaign import Campaign, Outcome
-from game.inputs import NOTHING, Action
-from game.loop import FixedStep
-from game.tuning import Tuning
-from game.world import EventKind, World
+from game.collision.aabb import Box
+from game.sim.campaign import Campaign, Outcome
+from game.sim.fixed_step import FixedStep
+from game.sim.inputs import NOTHING, Action
+from game.sim.tuning import Tuning
+from game.sim.world import EventKind, World
 from tests.maps import level_from_ascii
 
 RIGHT = frozenset({Action.RIGHT})

@@ -20,7 +20,7 @@ Read it in this order, one concept per module:
   :mod:`~game.bench.charts`, :mod:`~game.bench.machine`, :mod:`~game.bench.sizes` and
   :mod:`~game.bench.readme` are the plumbing.
 
-The thresholds the game uses (:mod:`game.methods`) cite the committed run of this bench.
+The thresholds the game uses (:mod:`game.collision.methods`) cite the committed run of this bench.
 """
 
 from __future__ import annotations

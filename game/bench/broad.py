@@ -7,15 +7,17 @@ What it teaches:
   * **One frame** is: every item has moved a little (up to 2 px on each axis, like crates at
     120 px/s), the method is told where everything is now, then it returns every overlapping
     pair. For sprites "telling" is setting their rects; for the structures of
-    :mod:`game.brute_force`, :mod:`game.spatial_grid`, :mod:`game.quadtree` and
-    :mod:`game.sort_and_sweep` it is ``move()`` for each item, which is real work.
+    :mod:`game.collision.broad.brute_force`, :mod:`game.collision.broad.spatial_grid`,
+    :mod:`game.collision.broad.quadtree` and
+    :mod:`game.collision.broad.sort_and_sweep` it is ``move()`` for each item, which is real work.
   * **The crowd** is N boxes of 8 to 24 px at whole-pixel positions, spread so that each has
     a 64 x 64 px patch of the world on average: about one box in five touches another. Whole
     pixels make ``Rect`` and ``Box`` agree, so every method must return *the same pair set*,
     and the bench checks that it does.
   * **Testing every pair** is ``groupcollide(G, G)`` (each sprite against the whole group,
     in a Python loop), ``Rect.collidelistall`` for each rect (the same, but the inner loop
-    is C) and :class:`~game.brute_force.BruteForce` (both loops in Python). All grow as N².
+    is C) and :class:`~game.collision.broad.brute_force.BruteForce` (both loops in Python). All
+    grow as N².
   * **The structures** grow about as N, so a log-log chart shows them as shallower lines.
     The *crossover* is the N from which a structure beats brute force at every larger N;
     below it the simple loop wins, which is why a scene with a dozen things needs no grid.
@@ -37,16 +39,16 @@ from typing import Protocol
 
 import pygame
 
-from game.aabb import Box
 from game.bench import charts
 from game.bench.records import Row, values
 from game.bench.sizes import Sizes
 from game.bench.timing import Case, interleaved
-from game.brute_force import BroadPhase, BruteForce, pair_of
-from game.methods import GRID_CELL_SIZE_FACTOR
-from game.quadtree import Quadtree
-from game.sort_and_sweep import SortAndSweep
-from game.spatial_grid import SpatialGrid
+from game.collision.aabb import Box
+from game.collision.broad.brute_force import BroadPhase, BruteForce, pair_of
+from game.collision.broad.quadtree import Quadtree
+from game.collision.broad.sort_and_sweep import SortAndSweep
+from game.collision.broad.spatial_grid import SpatialGrid
+from game.collision.methods import GRID_CELL_SIZE_FACTOR
 
 CHART = "broad_phase"
 SEED = 3
@@ -127,7 +129,8 @@ class CollideListAll:
 
 
 class Structure:
-    """Any :class:`~game.brute_force.BroadPhase`: ``move`` every item, then ``pairs()``."""
+    """Any :class:`~game.collision.broad.brute_force.BroadPhase`: ``move`` every item, then
+    ``pairs()``."""
 
     def __init__(self, phase: BroadPhase[int], boxes: list[Box]) -> None:
         self.phase = phase

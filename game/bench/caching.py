@@ -6,7 +6,7 @@ What it teaches: people "cache" ``obj.rect`` with ``obj.rect.copy()`` or ``Rect(
 to make collision code faster, or "safer". Reading ``obj.rect`` is one attribute lookup
 that hands back the same Rect object; a copy builds a new Rect every time, which costs more
 than the lookup it was meant to save, and a copy is stale the moment the sprite moves. Keep
-one exact position and derive the Rect from it in one place (:meth:`game.body.Body.place`),
+one exact position and derive the Rect from it in one place (:meth:`game.sim.body.Body.place`),
 then read ``obj.rect`` wherever you need it.
 
 Each form is timed in a loop over many bodies; the empty loop is timed too, so the table
@@ -21,12 +21,12 @@ from statistics import median
 
 import pygame
 
-from game.aabb import Box
 from game.bench import charts
 from game.bench.records import Row, markdown_table, values
 from game.bench.sizes import Sizes
 from game.bench.timing import Case, interleaved
-from game.body import Body
+from game.collision.aabb import Box
+from game.sim.body import Body
 
 CHART = "caching"
 LOOP = "the loop alone (for obj in bodies)"

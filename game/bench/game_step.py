@@ -1,7 +1,7 @@
 """The whole collision step of the game, per tick: on the shipped level, and as maps grow wide.
 
 Where it sits: the last chart of ``python -m game.bench``. It plays the game headless through
-:class:`game.campaign.Campaign` and :meth:`game.world.World.step`, nothing stubbed.
+:class:`game.sim.campaign.Campaign` and :meth:`game.sim.world.World.step`, nothing stubbed.
 
 What it teaches:
   * **The budget is per tick, at the tail.** A game that is fast on average but slow one tick
@@ -26,17 +26,17 @@ from pathlib import Path
 from statistics import median
 from time import perf_counter
 
-from game.aabb import Box
 from game.bench import charts
 from game.bench.records import Row, values
 from game.bench.sizes import Sizes
 from game.bench.timing import collector_off, percentile
-from game.campaign import Campaign, Outcome
-from game.inputs import Action, Actions, InputScript
-from game.level import CoinSpec, EnemySpec, Level
+from game.collision.aabb import Box
 from game.levels import LEVELS_DIR, load_level
-from game.tilegrid import TileGrid, TileKind, TileShape
-from game.world import World
+from game.sim.campaign import Campaign, Outcome
+from game.sim.inputs import Action, Actions, InputScript
+from game.sim.level import CoinSpec, EnemySpec, Level
+from game.sim.tilegrid import TileGrid, TileKind, TileShape
+from game.sim.world import World
 
 CHART = "game_step"
 SCRIPTS_DIR = LEVELS_DIR.parent / "tests" / "scripts"
@@ -88,7 +88,7 @@ def level_to_play() -> tuple[Path, Path]:
 
 def play(level: Path, script: InputScript) -> tuple[list[float], bool]:
     """Seconds of collision work per tick until the level is left; and whether it was won."""
-    campaign = Campaign(level)
+    campaign = Campaign(level, loader=load_level)
     last = script.events[-1].tick if script.events else 0
     spent: list[float] = []
     with collector_off():

@@ -1,7 +1,8 @@
 """The grid's cell size: time per frame of the same crowd for cells of several sizes.
 
 Where it sits: after the broad-phase chart in ``python -m game.bench``, on the same crowds and
-frames (:mod:`game.bench.broad`). Its result sets :data:`game.methods.GRID_CELL_SIZE_FACTOR`.
+frames (:mod:`game.bench.broad`). Its result sets
+:data:`game.collision.methods.GRID_CELL_SIZE_FACTOR`.
 
 What it teaches: a spatial grid has one knob, and both ends of it are slow. Cells much smaller
 than a body file every body under many cells (more bookkeeping per move, the same pair met

@@ -1,8 +1,9 @@
 """Chart 1, the narrow phase: what each overlap test costs, and how often it is wrong.
 
 Where it sits: the first chart of ``python -m game.bench``. It times the exact and the cheap
-tests of :mod:`game.aabb`, :mod:`game.circles`, :mod:`game.sat`, :mod:`game.masks` and
-:mod:`game.composite` on four families of shapes, and counts their mistakes against an
+tests of :mod:`game.collision.aabb`, :mod:`game.collision.circles`, :mod:`game.collision.sat`,
+:mod:`game.collision.masks` and
+:mod:`game.collision.composite` on four families of shapes, and counts their mistakes against an
 exact oracle.
 
 What it teaches:
@@ -36,16 +37,16 @@ from typing import Any
 
 import pygame
 
-from game import masks
-from game.aabb import Box
 from game.bench import charts
 from game.bench.records import Row, values
 from game.bench.sizes import Sizes
 from game.bench.timing import Case, interleaved
-from game.circles import Circle, bounding_circle, precheck_then_rect
-from game.composite import Composite, l_shape
-from game.sat import Polygon, oriented_box
-from game.sat import collide as sat_collide
+from game.collision import masks
+from game.collision.aabb import Box
+from game.collision.circles import Circle, bounding_circle, precheck_then_rect
+from game.collision.composite import Composite, l_shape
+from game.collision.sat import Polygon, oriented_box
+from game.collision.sat import collide as sat_collide
 
 CHART = "narrow_phase"
 SEED = 1

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 from statistics import median
 
-from game import methods
 from game.bench import (
     broad,
     caching,
@@ -22,6 +21,7 @@ from game.bench import (
 from game.bench.records import Row, markdown_table, values
 from game.bench.sizes import Sizes
 from game.bench.targets import Target
+from game.collision import methods
 
 
 def _cost(rows: list[Row], method: str, family: str) -> float:
@@ -129,7 +129,7 @@ def cells_text(rows: list[Row]) -> str:
         f" with cells from {factors[0]} to {factors[-1]} typical body sizes (16 px) across: "
         f"{spread}. Cells near the body size file each box under several cells; big cells "
         f"hold crowds. The fastest here was {best}x; the game uses "
-        "`game.methods.GRID_CELL_SIZE_FACTOR`.")
+        "`game.collision.methods.GRID_CELL_SIZE_FACTOR`.")
 
 
 def walls_text(rows: list[Row]) -> str:
@@ -178,7 +178,8 @@ def game_text(rows: list[Row]) -> str:
 
 
 def choices(results: dict[str, list[Row]]) -> list[tuple[str, str, str]]:
-    """The thresholds of :mod:`game.methods`: name, value in the code, value this run found."""
+    """The thresholds of :mod:`game.collision.methods`: name, value in the code, value this run
+    found."""
     measured_n = broad.crossover(results[broad.CHART], broad.GRID, broad.BRUTE)
     best = grid_cells.fastest(results[grid_cells.CHART])
     return [("BROAD_PHASE_CROSSOVER_N", f"{methods.BROAD_PHASE_CROSSOVER_N}", f"{measured_n}"),
@@ -189,7 +190,7 @@ def methods_text(results: dict[str, list[Row]]) -> str:
     rows = [[name, measured, where] for (name, _, measured), where in zip(
         choices(results), ["the crossover on `broad_phase.png`", "fastest on `grid_cells.png`"],
         strict=True)]
-    return markdown_table(["threshold in game/methods.py", "this run", "from"], rows)
+    return markdown_table(["threshold in game/collision/methods.py", "this run", "from"], rows)
 
 
 def text(results: dict[str, list[Row]], checked: list[Target], sizes: Sizes,
@@ -201,7 +202,8 @@ def text(results: dict[str, list[Row]], checked: list[Target], sizes: Sizes,
         "those CSVs (long format: chart, method, parameter, round, value, unit). Measured on: "
         f"{footnote}. Absolute times depend on the machine; the ratios travel better.",
         "## Targets\n\n" + targets.markdown(checked),
-        "## The game's choices\n\nThe scene thresholds in `game/methods.py` are set from, and "
+        "## The game's choices\n\nThe scene thresholds in `game/collision/methods.py` are set "
+        "from, and "
         "cite, the committed run of this bench. A new run that disagrees is a reason to look "
         "again rather than to edit them blindly: where two lines run close, a crossover moves "
         "with noise.\n\n" + methods_text(results),

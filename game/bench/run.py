@@ -78,5 +78,6 @@ def run(sizes: Sizes, out: Path, echo: Callable[[str], None] = print,
     echo(f"{'targets':>14}: {perf_counter() - started:5.1f} s  -> targets.csv, .md, README.md")
     for name, in_code, measured in readme.choices(results):
         if in_code != measured:
-            echo(f"note: game/methods.py has {name} = {in_code}; this run measured {measured}")
+            echo(f"note: game/collision/methods.py has {name} = {in_code}; "
+                 f"this run measured {measured}")
     return results, checked

@@ -1,7 +1,7 @@
 """Chart 2, tunnelling: how often each method lets a fast body fly through a one-tile wall.
 
 Where it sits: the second chart of ``python -m game.bench``. It flies a body head-on at a
-wall with every method of :mod:`game.swept` and counts what each one misses; no timing, so
+wall with every method of :mod:`game.collision.swept` and counts what each one misses; no timing, so
 its results are the same on every machine.
 
 What it teaches:
@@ -31,11 +31,18 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import NamedTuple
 
-from game.aabb import Box
 from game.bench import charts
 from game.bench.records import Row, values
 from game.bench.sizes import Sizes
-from game.swept import clamp_speed, discrete_hit, position_at, steps_needed, substep_hit, sweep
+from game.collision.aabb import Box
+from game.collision.swept import (
+    clamp_speed,
+    discrete_hit,
+    position_at,
+    steps_needed,
+    substep_hit,
+    sweep,
+)
 
 CHART = "tunnelling"
 SEED = 2

@@ -1,7 +1,7 @@
 """Chart 4, walls: one body asking "which walls do I touch?" as the map grows.
 
 Where it sits: the fourth chart of ``python -m game.bench``. It times the game's wall lookup,
-:meth:`TileGrid.shapes_in` (what :mod:`game.movement` calls in every axis pass), against the
+:meth:`TileGrid.shapes_in` (what :mod:`game.sim.movement` calls in every axis pass), against the
 two ways a pygame program often does it: ``pygame.sprite.spritecollide`` over a group holding
 every wall sprite, and ``Rect.collidelistall`` over a list of every wall rect.
 
@@ -28,13 +28,13 @@ from typing import Any
 
 import pygame
 
-from game.aabb import Box
 from game.bench import charts
 from game.bench.records import Row, values
 from game.bench.sizes import Sizes
 from game.bench.timing import Case, interleaved
+from game.collision.aabb import Box
 from game.levels import FIRST_LEVEL, load_level
-from game.tilegrid import TileGrid, TileShape
+from game.sim.tilegrid import TileGrid, TileShape
 
 CHART = "walls"
 SEED = 4

@@ -6,7 +6,7 @@ list into ``levels/tile-hopper.tiled-project`` (and the files Tiled 1.8 and pytm
 the defaults a designer sees in Tiled are the ones the game uses.
 
 What it teaches: keep one source of truth and generate the rest. Numbers that belong to the
-game's feel (the enemies' patrol speed, gravity) come from :class:`game.tuning.Tuning`.
+game's feel (the enemies' patrol speed, gravity) come from :class:`game.sim.tuning.Tuning`.
 
 >>> CLASSES_BY_NAME["coin"].defaults()
 {'value': 1}
@@ -25,10 +25,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from game.enemy import EnemyKind
 from game.levels.attributes import parse_number
-from game.tilegrid import TileKind
-from game.tuning import Tuning
+from game.sim.enemy import EnemyKind
+from game.sim.tilegrid import TileKind
+from game.sim.tuning import Tuning
 
 MemberType = Literal["int", "float", "string", "bool", "file"]
 UseAs = Literal["object", "tile", "map"]

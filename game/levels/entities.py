@@ -14,8 +14,7 @@ from __future__ import annotations
 from collections import defaultdict
 from dataclasses import dataclass
 
-from game.aabb import Box
-from game.level import CoinSpec, EnemySpec
+from game.collision.aabb import Box
 from game.levels.classes import (
     CLASSES_BY_NAME,
     OBJECT_CLASSES,
@@ -27,9 +26,10 @@ from game.levels.classes import (
 from game.levels.errors import Findings
 from game.levels.header import MapHeader
 from game.levels.objects import MapObject
-from game.platforms import PlatformSpec, Route
-from game.tilegrid import TileGrid, TileKind
-from game.tuning import Tuning
+from game.sim.level import CoinSpec, EnemySpec
+from game.sim.platforms import PlatformSpec, Route
+from game.sim.tilegrid import TileGrid, TileKind
+from game.sim.tuning import Tuning
 
 DEFAULT_COIN_PX = 8
 BODY_SHAPES = ("rectangle", "point", "ellipse", "tile")  # what a body's box can come from

@@ -1,4 +1,4 @@
-"""Load a Tiled ``.tmx`` map into a :class:`game.level.Level`, or say clearly why not.
+"""Load a Tiled ``.tmx`` map into a :class:`game.sim.level.Level`, or say clearly why not.
 
 Where it sits: between Tiled's files and the game. :func:`load_level` is what the game
 calls; :func:`check_level` is what ``python -m game.levels check`` calls, and also verifies
@@ -37,7 +37,6 @@ import contextlib
 from collections.abc import Sequence
 from pathlib import Path
 
-from game.level import Level, TileLayer
 from game.levels import pytmx_bridge
 from game.levels.classes import LEVEL
 from game.levels.entities import build_entities
@@ -53,7 +52,8 @@ from game.levels.templates import Templates
 from game.levels.tiledata import TileDataError, decode
 from game.levels.tiledxml import is_json_name, read_tiled_xml
 from game.levels.tilesets import read_tilesets
-from game.tuning import Tuning
+from game.sim.level import Level, TileLayer
+from game.sim.tuning import Tuning
 
 DecodedLayer = tuple[LayerNode, list[int]]
 

@@ -6,7 +6,7 @@ object is in the game. Templates are resolved first (:mod:`game.levels.templates
 What it teaches:
   * Tiled's object coordinates are the top-left corner, except for tile objects (objects
     with a ``gid``), which are anchored at their bottom-left, like a tile standing on the
-    ground. Both become a top-left :class:`~game.aabb.Box` here, moved by the layer's
+    ground. Both become a top-left :class:`~game.collision.aabb.Box` here, moved by the layer's
     offset so the object is where the designer sees it.
   * A tile object without a class of its own takes its tile's class, as in Tiled.
   * Every number is checked: ``x="nan"`` would make a Rect at -2147483648.
@@ -23,7 +23,7 @@ import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 
-from game.aabb import Box
+from game.collision.aabb import Box
 from game.levels.attributes import number, whole
 from game.levels.errors import Findings
 from game.levels.layers import LayerNode

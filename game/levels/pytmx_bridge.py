@@ -33,11 +33,11 @@ import pytmx
 import pytmx.pytmx
 import pytmx.util_pygame
 
-from game.level import TileLayer
 from game.levels.errors import Findings
 from game.levels.header import MapHeader
 from game.levels.layers import LayerNode
 from game.levels.tilesets import Tileset, Tilesets
+from game.sim.level import TileLayer
 
 FIX_IMAGES = "re-save the tileset image as PNG and pick it again in Tiled"
 

@@ -28,7 +28,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from game.aabb import Box
+from game.collision.aabb import Box
 from game.levels.attributes import number, whole
 from game.levels.classes import CLASSES_BY_NAME
 from game.levels.errors import Findings

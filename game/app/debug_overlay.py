@@ -1,0 +1,196 @@
+"""The F1 debug overlay: hitboxes, the tiles each body is checked against, and this tick's sweeps.
+
+Where it sits: drawn last in a frame, over the world and the HUD, when the player presses F1.
+It draws from what the last tick *recorded* (each body's ``last_x``/``last_y`` moves and
+``world.stats``) and changes nothing: it never calls :meth:`TileGrid.shapes_in`, whose work
+counters the stats are read from, and never moves a sprite.
+
+What it teaches (read the colours):
+  * **Hitboxes are not sprites.** The 1 px outlines are the float boxes the physics uses
+    (player green, enemies red, coins yellow, exits and checkpoints cyan, moving
+    platforms pink); the art around them is decoration.
+  * **Broad phase.** The outlined tile shapes are the ones in the cells around each body:
+    Solid grey, OneWay orange, Hazard magenta. Only these are ever tested; the rest of the
+    map costs nothing.
+  * **Swept moves.** Each body moved along x (the blue sweep) and then along y (the purple
+    sweep); a red bar marks the face a sweep stopped at. Standing still, you still see a
+    thin purple sweep hitting the floor every tick: gravity pulls, the floor stops it.
+  * **The cost.** "checks: N shapes in M cells" is what the whole tick's lookups did.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pygame
+
+from game.app.assets import Assets
+from game.app.hud import HUD_BAR_H_PX, SMALL_TEXT_ANTIALIAS, Color, draw_text
+from game.collision.aabb import Box
+from game.collision.contacts import Change, ContactEvent
+from game.sim.camera import Camera
+from game.sim.movement import Move, Side
+from game.sim.tilegrid import TileGrid, TileKind
+from game.sim.world import PLAYER_KEY, ContactKey, World
+
+PLAYER_COLOR: Color = (80, 255, 96)
+ENEMY_COLOR: Color = (255, 64, 64)
+COIN_COLOR: Color = (255, 232, 64)
+EXIT_COLOR: Color = (64, 240, 255)  # exits and checkpoints
+PLATFORM_COLOR: Color = (255, 120, 200)
+SHAPE_COLORS: dict[TileKind, Color] = {
+    TileKind.SOLID: (225, 225, 235),
+    TileKind.ONE_WAY: (255, 150, 40),
+    TileKind.HAZARD: (255, 64, 255),
+}
+SHAPE_RIM_COLOR: Color = (24, 20, 40)  # just inside each outline, so it shows on light tiles
+SHAPE_RIM_INSET_PX = 1
+SHAPE_FILL_ALPHA = 40  # 0..255: a faint wash inside each checked tile shape
+SWEEP_X_COLOR: Color = (60, 120, 255, 90)
+SWEEP_Y_COLOR: Color = (180, 70, 255, 90)
+HIT_COLOR: Color = (255, 40, 40)
+HIT_EDGE_COLOR: Color = (0, 0, 0)  # a dark rim so the bar shows on light tiles too
+HIT_MARK_PX = 2  # the hit-face bar is this thick, straddling the face
+HIT_EDGE_PX = 1
+
+NEAR_CELLS = 1  # shapes this many cells around a body are shown as "checked"
+
+PANEL_COLOR: Color = (0, 0, 0, 160)
+PANEL_TEXT: Color = (230, 236, 255)
+PANEL_PAD_PX = 3
+PANEL_GAP_PX = 2  # between the HUD bar and the panel
+MS_PER_S = 1000.0
+CONTACT_LINES = 3  # the last few contact starts and ends, from the world's tracker
+
+
+def _screen_rect(box: Box, camera: Camera) -> pygame.Rect:
+    """The box through the camera, floored like every other drawn thing."""
+    return box.moved(-camera.x, -camera.y).to_rect()
+
+
+def _near_cells(grid: TileGrid, boxes: list[Box]) -> set[tuple[int, int]]:
+    cells: set[tuple[int, int]] = set()
+    pad_x, pad_y = NEAR_CELLS * grid.tile_w, NEAR_CELLS * grid.tile_h
+    for box in boxes:
+        around = Box(box.x - pad_x, box.y - pad_y, box.w + 2 * pad_x, box.h + 2 * pad_y)
+        cells.update(grid.cells_covering(around))
+    return cells
+
+
+def _draw_checked_shapes(wash: pygame.Surface, world: World) -> list[tuple[Color, pygame.Rect]]:
+    """Wash the tile shapes in the cells around each body and return their outlines to draw
+    (read-only: the cells are read through ``shapes_at``, never ``shapes_in``)."""
+    grid, camera = world.grid, world.camera
+    view = camera.view()
+    boxes = [body.box for body in world.bodies() if body.box.is_finite()]
+    cells = _near_cells(grid, [box for box in boxes if box.overlaps(view)])
+    outlines: list[tuple[Color, pygame.Rect]] = []
+    if not cells:
+        return outlines
+    for shape in (s for cell in sorted(cells) for s in grid.shapes_at(*cell)):
+        rect = _screen_rect(shape.box, camera)
+        color = SHAPE_COLORS[shape.kind]
+        wash.fill((*color[:3], SHAPE_FILL_ALPHA), rect)
+        outlines.append((color, rect))
+    return outlines
+
+
+def _draw_sweep(wash: pygame.Surface, move: Move | None, color: Color,
+                camera: Camera) -> pygame.Rect | None:
+    """Wash the region one axis move swept; return the bar marking the face it hit, if any."""
+    if move is None or not move.swept.is_finite():
+        return None
+    wash.fill(color, _screen_rect(move.swept, camera))
+    hit = move.hit
+    if hit is None:
+        return None
+    box = move.box
+    if hit.side in (Side.LEFT, Side.RIGHT):
+        left = math.floor(hit.face - camera.x) - HIT_MARK_PX // 2
+        top = math.floor(box.top - camera.y)
+        bar = pygame.Rect(left, top, HIT_MARK_PX, math.ceil(box.h))
+    else:
+        left = math.floor(box.left - camera.x)
+        top = math.floor(hit.face - camera.y) - HIT_MARK_PX // 2
+        bar = pygame.Rect(left, top, math.ceil(box.w), HIT_MARK_PX)
+    return bar
+
+
+def _draw_outlines(target: pygame.Surface, world: World) -> None:
+    camera = world.camera
+    for goal in world.exits:
+        pygame.draw.rect(target, EXIT_COLOR, _screen_rect(goal.box, camera), width=1)
+    for coin in world.coins:
+        pygame.draw.rect(target, COIN_COLOR, _screen_rect(coin.box, camera), width=1)
+    for enemy in world.enemies:
+        pygame.draw.rect(target, ENEMY_COLOR, _screen_rect(enemy.box, camera), width=1)
+    for platform in world.platforms:
+        pygame.draw.rect(target, PLATFORM_COLOR, _screen_rect(platform.box, camera), width=1)
+    for flag in world.checkpoints:
+        pygame.draw.rect(target, EXIT_COLOR, _screen_rect(flag.box, camera), width=1)
+    pygame.draw.rect(target, PLAYER_COLOR, _screen_rect(world.player.box, camera), width=1)
+
+
+def _contact_line(event: ContactEvent[ContactKey]) -> str:
+    """``tick 307 +enemy 0``: a contact starting (+) or ending (-) with the player."""
+    sign = "+" if event.change is Change.STARTED else "-"
+    other = next((key for key in event.pair if key != PLAYER_KEY), event.pair[0])
+    return f"tick {event.tick} {sign}{other[0]} {other[1]}"
+
+
+def _draw_panel(target: pygame.Surface, world: World, assets: Assets, fps: float,
+                update_ms: float) -> None:
+    player, stats = world.player, world.stats
+    ground = "ground" if player.on_ground else "air"
+    lines = (
+        f"FPS {fps:4.1f}  tick {update_ms:4.2f} ms",
+        f"collide {stats.collision_s * MS_PER_S:4.2f} ms",
+        f"{stats.shapes_tested} shapes in {stats.cells_visited} cells",
+        f"x {player.box.x:.1f} y {player.box.y:.1f} {ground}",
+        f"vx {player.vx:.0f} vy {player.vy:.0f}",
+        "walls: tile grid + sweeps",
+        f"enemies: brute force x{len(world.enemies)}",
+        *(_contact_line(event) for event in list(world.contacts.log)[-CONTACT_LINES:]),
+    )
+    font = assets.small_font
+    line_h = font.get_linesize()
+    width = max(font.size(line)[0] for line in lines) + 2 * PANEL_PAD_PX
+    panel = pygame.Rect(0, HUD_BAR_H_PX + PANEL_GAP_PX, width,
+                        len(lines) * line_h + 2 * PANEL_PAD_PX)
+    layer = pygame.Surface(panel.size, pygame.SRCALPHA)
+    layer.fill(PANEL_COLOR)
+    target.blit(layer, panel.topleft)
+    y = panel.top + PANEL_PAD_PX
+    for line in lines:
+        draw_text(target, font, line, (panel.left + PANEL_PAD_PX, y), PANEL_TEXT, outline=None,
+                  antialias=SMALL_TEXT_ANTIALIAS)
+        y += line_h
+
+
+def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float,
+               update_ms: float) -> None:
+    """Draw the overlay for the last tick: checked tiles, sweeps, hitboxes, and the numbers.
+
+    ``fps`` is the measured frame rate; ``update_ms`` is how long the last frame's ticks
+    took, in milliseconds. Reads ``world`` and changes none of it.
+    """
+    camera = world.camera
+    wash = pygame.Surface(target.get_size(), pygame.SRCALPHA)  # translucent fills go here
+    outlines = _draw_checked_shapes(wash, world)
+    bars: list[pygame.Rect] = []
+    for body in world.bodies():
+        for move, color in ((body.last_x, SWEEP_X_COLOR), (body.last_y, SWEEP_Y_COLOR)):
+            bar = _draw_sweep(wash, move, color, camera)
+            if bar is not None:
+                bars.append(bar)
+    target.blit(wash, (0, 0))
+    for color, rect in outlines:
+        rim = rect.inflate(-2 * SHAPE_RIM_INSET_PX, -2 * SHAPE_RIM_INSET_PX)
+        pygame.draw.rect(target, SHAPE_RIM_COLOR, rim, width=1)
+        pygame.draw.rect(target, color, rect, width=1)
+    for bar in bars:
+        target.fill(HIT_EDGE_COLOR, bar.inflate(2 * HIT_EDGE_PX, 2 * HIT_EDGE_PX))
+    for bar in bars:
+        target.fill(HIT_COLOR, bar)
+    _draw_outlines(target, world)
+    _draw_panel(target, world, assets, fps, update_ms)

@@ -1,0 +1,27 @@
+"""One frame of play: the world, the HUD and, when on, the debug overlay, in that order.
+
+Where it sits: in the app, below :mod:`game.app.window` and :mod:`game.app.run`, which both
+draw frames with it (the window every frame, a headless run once for ``--screenshot``).
+"""
+
+from __future__ import annotations
+
+import pygame
+
+from game.app.assets import Assets, load_assets
+from game.app.debug_overlay import draw_debug
+from game.app.hud import draw_hud
+from game.app.render import draw_world
+from game.sim.campaign import Campaign
+
+
+def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = None,
+                 frame: int = 0, fps: float = 0.0, update_ms: float = 0.0) -> pygame.Surface:
+    """Draw the current state of play on the display surface and return it."""
+    target = pygame.display.get_surface()
+    assets = assets or load_assets()
+    draw_world(target, campaign.world, assets, frame or campaign.ticks)
+    draw_hud(target, campaign, assets)
+    if debug:
+        draw_debug(target, campaign.world, assets, fps, update_ms)
+    return target

@@ -1,0 +1,130 @@
+"""The heads-up display: lives, coins, score and the level's title along the top of the screen.
+
+Where it sits: drawn after :func:`game.app.render.draw_world` each frame, in screen space (the
+camera does not move it). It reads the :class:`~game.sim.campaign.Campaign` and changes nothing.
+It also holds the small text helpers the menus and the debug overlay share.
+
+What it teaches:
+  * **Screen space versus world space.** The world is drawn through the camera; the HUD is
+    not, so it stays put while the level scrolls underneath.
+  * **Readable text on any background.** A dark translucent strip behind the bar, and a
+    one-pixel outline around free-standing text, keep light letters legible over a bright
+    sky and a dark cave alike.
+  * **Translucency in pygame 2.6** needs a surface with per-pixel alpha (``SRCALPHA``):
+    ``pygame.draw`` writes colours, it does not blend them onto an opaque target.
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+import pygame
+
+from game.app.assets import Assets
+from game.sim.campaign import Campaign
+
+Color = tuple[int, int, int] | tuple[int, int, int, int]
+Anchor = Literal["topleft", "midtop", "topright", "midleft", "center", "midright",
+                 "bottomleft", "midbottom", "bottomright"]
+
+TEXT_COLOR: Color = (255, 255, 255)
+OUTLINE_COLOR: Color = (20, 16, 32)
+OUTLINE_PX = 1  # free-standing text is ringed by this many pixels of OUTLINE_COLOR
+GOLD: Color = (255, 214, 90)
+DIM_TEXT: Color = (190, 196, 220)
+
+HUD_BAR_H_PX = 13  # height of the strip along the top of the screen
+HUD_BAR_COLOR: Color = (12, 10, 28, 150)  # dark and translucent: the level shows through
+HUD_MARGIN_PX = 3  # gap between the screen edge and the first/last item
+HUD_GAP_PX = 8  # gap between groups (hearts, coins, title, score)
+ICON_GAP_PX = 1  # gap between neighbouring hearts, and between an icon and its number
+MAX_HEARTS_SHOWN = 6  # more lives than this are shown as one heart and a count
+LOST_HEART_ALPHA = 70  # 0..255: a life already lost is drawn faint
+SCORE_DIGITS = 5
+ELLIPSIS = "..."
+SMALL_TEXT_ANTIALIAS = False  # ``Assets.small_font`` is crisper unsmoothed at 320x180
+
+
+def draw_text(target: pygame.Surface, font: pygame.font.Font, text: str,
+              pos: tuple[int, int], color: Color = TEXT_COLOR, *,
+              anchor: Anchor = "topleft", outline: Color | None = OUTLINE_COLOR,
+              antialias: bool = True) -> pygame.Rect:
+    """Draw ``text`` with its ``anchor`` point at ``pos``, outlined 1 px unless ``outline`` is
+    None; return the rectangle it covers (without the outline)."""
+    face = font.render(text, antialias, color)
+    rect = face.get_rect()
+    setattr(rect, anchor, pos)
+    if outline is not None:
+        edge = font.render(text, antialias, outline)
+        for dx in (-OUTLINE_PX, 0, OUTLINE_PX):
+            for dy in (-OUTLINE_PX, 0, OUTLINE_PX):
+                if dx or dy:
+                    target.blit(edge, rect.move(dx, dy))
+    target.blit(face, rect)
+    return rect
+
+
+def fit_text(font: pygame.font.Font, text: str, max_w: int) -> str:
+    """``text``, shortened with an ellipsis if it is wider than ``max_w`` pixels."""
+    if font.size(text)[0] <= max_w:
+        return text
+    while text and font.size(text + ELLIPSIS)[0] > max_w:
+        text = text[:-1]
+    return text.rstrip() + ELLIPSIS if text else ""
+
+
+def translucent_rect(target: pygame.Surface, rect: pygame.Rect, color: Color) -> None:
+    """Fill ``rect`` with an RGBA colour blended over what is already there."""
+    if rect.w <= 0 or rect.h <= 0:
+        return
+    layer = pygame.Surface(rect.size, pygame.SRCALPHA)
+    layer.fill(color)
+    target.blit(layer, rect.topleft)
+
+
+def _draw_hearts(target: pygame.Surface, assets: Assets, lives: int, start_lives: int,
+                 left: int, mid_y: int) -> int:
+    """Hearts for the lives left (and faint ones for those lost); return the right edge."""
+    heart = assets.heart
+    top = mid_y - heart.get_height() // 2
+    if max(lives, start_lives) > MAX_HEARTS_SHOWN:
+        target.blit(heart, (left, top))
+        rect = draw_text(target, assets.font, f"x{lives}",
+                         (left + heart.get_width() + ICON_GAP_PX, mid_y), anchor="midleft")
+        return rect.right
+    lost = heart.copy()
+    lost.set_alpha(LOST_HEART_ALPHA)
+    x = left
+    for index in range(max(lives, start_lives)):
+        target.blit(heart if index < lives else lost, (x, top))
+        x += heart.get_width() + ICON_GAP_PX
+    return x
+
+
+def draw_hud(target: pygame.Surface, campaign: Campaign, assets: Assets) -> None:
+    """Draw the top bar: hearts for lives, coin icon and count, level title, score."""
+    width = target.get_width()
+    bar = pygame.Rect(0, 0, width, HUD_BAR_H_PX)
+    translucent_rect(target, bar, HUD_BAR_COLOR)
+    mid_y = bar.centery
+
+    right = _draw_hearts(target, assets, max(0, campaign.lives), campaign.tuning.start_lives,
+                         HUD_MARGIN_PX, mid_y)
+
+    coin = assets.coin_frames[0]
+    coin_x = right + HUD_GAP_PX
+    target.blit(coin, (coin_x, mid_y - coin.get_height() // 2))
+    coins = draw_text(target, assets.font, f"x{campaign.coins_collected}",
+                      (coin_x + coin.get_width() + ICON_GAP_PX, mid_y), GOLD, anchor="midleft")
+
+    score = draw_text(target, assets.font, f"SCORE {campaign.score:0{SCORE_DIGITS}d}",
+                      (width - HUD_MARGIN_PX, mid_y), anchor="midright")
+
+    room = score.left - coins.right - 2 * HUD_GAP_PX
+    title = fit_text(assets.font, campaign.world.level.title, room)
+    if title:
+        half = assets.font.size(title)[0] // 2 + HUD_GAP_PX
+        centre_x = width // 2  # centred on the screen if it fits there, else in the gap
+        if not coins.right + half <= centre_x <= score.left - half:
+            centre_x = (coins.right + score.left) // 2
+        draw_text(target, assets.font, title, (centre_x, mid_y), DIM_TEXT, anchor="center")

@@ -1,0 +1,165 @@
+"""Running the game: headless for scripts and tests, or in a window for people.
+
+Where it sits: in the app, under :mod:`game.app.cli`, which hands it the options and the
+window loop to use. It owns the files a run writes and, with :mod:`game.app.window`, the clock,
+the keyboard (and, through :mod:`game.app.gamepad`, the pads); the simulation below never sees
+any of them.
+
+A frame in the window (:mod:`game.app.window`), in order:
+
+1. **Events**: quit, pads plugged in or out, F1 (debug overlay), F11 (fullscreen), and
+   menu presses from keys and pads (:mod:`game.app.menus`).
+2. **Ticks**: the fixed-step loop (:mod:`game.sim.fixed_step`) says how many 1/60 s ticks are due;
+   each one reads the held actions (keyboard and pads together, or the script) and calls
+   ``Campaign.tick``.
+3. **Draw**: world, HUD, the debug overlay if on, then any screen (title, pause, ...).
+
+Headless runs skip 1 and 3 and step as fast as the machine allows.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pygame
+
+from game.app.files import write_atomically, write_text_atomically
+from game.app.frame import render_frame
+from game.app.report import Timing, build_report
+from game.levels import FIRST_LEVEL, LevelError, load_level
+from game.sim.campaign import Campaign, Outcome
+from game.sim.inputs import NOTHING, Action, Actions, InputScript, InputScriptError, Recorder
+from game.sim.level import Level
+from game.sim.world import Event
+
+HEADLESS_TICK_LIMIT = 60 * 60 * 60  # an hour of game time: a run with no --ticks still ends
+TARGET_FPS = 60
+EXIT_OK, EXIT_BAD_FILE, EXIT_USAGE = 0, 1, 2
+
+KEYS: dict[Action, tuple[int, ...]] = {
+    Action.LEFT: (pygame.K_LEFT, pygame.K_a),
+    Action.RIGHT: (pygame.K_RIGHT, pygame.K_d),
+    Action.UP: (pygame.K_UP, pygame.K_w),
+    Action.DOWN: (pygame.K_DOWN, pygame.K_s),
+    Action.JUMP: (pygame.K_SPACE, pygame.K_z, pygame.K_UP, pygame.K_w),
+}
+
+
+def held_keys(bindings: Mapping[Action, tuple[int, ...]] = KEYS) -> Actions:
+    """The actions whose keys are down right now (the pads' are :meth:`Gamepads.held`)."""
+    pressed = pygame.key.get_pressed()
+    return frozenset(a for a, keys in bindings.items() if any(pressed[k] for k in keys))
+
+
+def level_label(path: Path) -> str:
+    """A level's path as the report shows it: relative to the working folder when inside it."""
+    if not path.is_absolute():
+        return path.as_posix()
+    try:
+        return path.relative_to(Path.cwd()).as_posix()
+    except ValueError:
+        return path.as_posix()
+
+
+def fail(message: str, status: int) -> int:
+    print(message, file=sys.stderr)
+    return status
+
+
+@dataclass
+class Run:
+    """What every kind of run shares: the campaign, the input source and what to write."""
+
+    campaign: Campaign
+    script: InputScript | None
+    args: argparse.Namespace
+    recorder: Recorder = field(default_factory=Recorder)
+    timing: Timing = field(default_factory=Timing)
+
+    def tick(self, player: Actions = NOTHING) -> list[Event]:
+        """One simulation tick with input from the script, else what the player holds."""
+        held = self.script.held_at(self.campaign.ticks) if self.script else player
+        self.recorder.observe(self.campaign.ticks, held)
+        started = time.perf_counter()
+        events = self.campaign.tick(held)
+        self.timing.add(time.perf_counter() - started, self.campaign.world.stats.collision_s)
+        return events
+
+    @property
+    def last_update_ms(self) -> float:
+        """How long the last tick took, for the debug overlay (0 before the first)."""
+        return self.timing.update_s[-1] * 1000.0 if self.timing.update_s else 0.0
+
+    def finished(self) -> bool:
+        ticks = self.args.ticks
+        return (self.campaign.outcome is not Outcome.RUNNING
+                or (ticks is not None and self.campaign.ticks >= ticks))
+
+    def write_outputs(self, frame: pygame.Surface | None) -> None:
+        if self.args.record:
+            write_text_atomically(self.args.record, self.recorder.text())
+        if self.args.report:
+            report = build_report(self.campaign, level_label(self.campaign.world.level.path),
+                                  self.timing)
+            write_text_atomically(self.args.report, json.dumps(report, indent=2) + "\n")
+        if self.args.screenshot and frame is not None:
+            write_atomically(self.args.screenshot, lambda tmp: pygame.image.save(frame, str(tmp)))
+
+
+def run(args: argparse.Namespace, play_in_window: Callable[[Run], int]) -> int:
+    """Run the game as the options ask, in a window through ``play_in_window`` unless
+    headless; return the exit status."""
+    script: InputScript | None = None
+    if args.inputs:
+        try:
+            script = InputScript.load(args.inputs)
+        except OSError as error:
+            return fail(f"{args.inputs}: cannot read the input script ({error.strerror}) — "
+                        "check the path", EXIT_BAD_FILE)
+        except UnicodeDecodeError:
+            return fail(f"{args.inputs}: the input script is not UTF-8 text — "
+                        "save it as plain text", EXIT_BAD_FILE)
+        except InputScriptError as error:
+            return fail(str(error), EXIT_USAGE)
+    first_level = args.level or FIRST_LEVEL
+    needs_pictures = not args.headless or args.screenshot is not None
+    if needs_pictures:
+        pygame.display.init()
+        pygame.font.init()
+        flags = 0 if args.headless else pygame.SCALED | pygame.RESIZABLE
+        from game.sim.camera import VIEW_H_PX, VIEW_W_PX
+        pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX), flags)
+        pygame.display.set_caption("Tile Hopper")
+
+    def loader(path: Path) -> Level:
+        return load_level(path, images=needs_pictures)
+
+    try:
+        campaign = Campaign(first_level, loader=loader)
+        game_run = Run(campaign, script, args)
+        if args.headless:
+            return run_headless(game_run)
+        return play_in_window(game_run)
+    except LevelError as error:
+        return fail(str(error), EXIT_BAD_FILE)
+    finally:
+        pygame.quit()
+
+
+def run_headless(game_run: Run) -> int:
+    """Step without a window until the run ends; render one frame if a screenshot is asked."""
+    limit = game_run.args.ticks if game_run.args.ticks is not None else HEADLESS_TICK_LIMIT
+    while not game_run.finished() and game_run.campaign.ticks < limit:
+        game_run.tick()
+    frame = None
+    if game_run.args.screenshot:
+        frame = render_frame(game_run.campaign, debug=game_run.args.debug,
+                             update_ms=game_run.last_update_ms)
+    game_run.write_outputs(frame)
+    return EXIT_OK

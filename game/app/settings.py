@@ -1,0 +1,218 @@
+"""The player's choices: volumes, fullscreen, and which keys and buttons do what.
+
+Where it sits: read once by the app before the window opens, written when the player changes
+something. It lives as ``settings.json`` in the data folder beside the progress, and is read
+and written with the same care (:class:`game.app.saves.JsonFile`): written atomically, and a
+file that cannot be used in full is kept aside as a backup, never silently wiped.
+
+What it teaches:
+  * **Check data at the edge.** Every value from the file is checked once, here, as it is
+    read; the rest of the game can trust a :class:`Settings`. An unknown key is ignored (a
+    newer version's file still loads); a bad value gets its default and one line in the
+    report returned to the caller, which decides whether to show it.
+  * **Store what a person can read.** Keys are stored by name (``"left"``, ``"a"``,
+    ``"space"``), as pygame names them, and turned into key codes only when the game needs
+    them (:meth:`Settings.key_codes`).
+
+>>> settings, problems = Settings.from_json({"music_volume": 0.25, "keys": {"jump": ["X"]},
+...                                          "theme": "dark"})
+>>> settings.music_volume, settings.keys["jump"], problems
+(0.25, ['x'], [])
+>>> settings, problems = Settings.from_json({"effects_volume": 7, "keys": {"jump": ["spcae"]}})
+>>> settings.effects_volume, settings.keys["jump"]
+(0.8, ['space', 'z', 'up', 'w'])
+>>> problems  # doctest: +NORMALIZE_WHITESPACE
+['effects_volume is 7, not a number from 0 to 1 (using 0.8)',
+ 'keys.jump: "spcae" is not a key name pygame knows (left out)',
+ 'keys.jump has no usable entry (using space, z, up, w)']
+"""
+
+from __future__ import annotations
+
+import json
+import warnings
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, TypeVar
+
+import pygame
+
+from game.app.saves import JsonFile, data_dir
+from game.sim.inputs import Action
+
+T = TypeVar("T")
+
+SETTINGS_FILE = "settings.json"
+SETTINGS_VERSION = 1  # written into the file; bump it if its layout ever changes
+
+DEFAULT_EFFECTS_VOLUME = 0.8  # 0 is mute, 1 is full
+DEFAULT_MUSIC_VOLUME = 0.5  # quieter than the effects, which carry the game's feedback
+DEFAULT_FULLSCREEN = False
+DEFAULT_KEYS: dict[str, tuple[str, ...]] = {  # action name -> pygame key names
+    Action.LEFT.value: ("left", "a"),
+    Action.RIGHT.value: ("right", "d"),
+    Action.UP.value: ("up", "w"),
+    Action.DOWN.value: ("down", "s"),
+    Action.JUMP.value: ("space", "z", "up", "w"),
+}
+# Gamepad buttons by number, as ``JOYBUTTONDOWN`` events report them. Button 0 is the bottom
+# face button (A on an Xbox-style pad) on most pads; moving uses the stick or the d-pad.
+DEFAULT_BUTTONS: dict[str, tuple[int, ...]] = {Action.JUMP.value: (0,)}
+
+
+def key_code(name: str) -> int | None:
+    """The pygame key code for a key name (any case), or None if pygame knows no such key.
+
+    It works before ``pygame.init()``: SDL turns names into codes with a fixed table, so
+    the warning pygame gives when the display is not open does not apply and is hushed.
+
+    >>> key_code("space") == pygame.K_SPACE, key_code("Left") == pygame.K_LEFT
+    (True, True)
+    >>> key_code("spcae") is None
+    True
+    """
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message=r"pygame\.init\(\) has not been called")
+        try:
+            return pygame.key.key_code(name)
+        except ValueError:
+            return None
+
+
+def key_name(code: int) -> str:
+    """pygame's name for a key code, the form settings are stored in: ``"left"``, ``"a"``."""
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message=r"pygame\.init\(\) has not been called")
+        return pygame.key.name(code)
+
+
+def _default_keys() -> dict[str, list[str]]:
+    return {action: list(names) for action, names in DEFAULT_KEYS.items()}
+
+
+def _default_buttons() -> dict[str, list[int]]:
+    return {action.value: list(DEFAULT_BUTTONS.get(action.value, ())) for action in Action}
+
+
+@dataclass
+class Settings:
+    """Everything the player can change, with a valid value for each."""
+
+    effects_volume: float = DEFAULT_EFFECTS_VOLUME
+    music_volume: float = DEFAULT_MUSIC_VOLUME
+    fullscreen: bool = DEFAULT_FULLSCREEN
+    keys: dict[str, list[str]] = field(default_factory=_default_keys)  # action -> key names
+    buttons: dict[str, list[int]] = field(default_factory=_default_buttons)  # action -> numbers
+
+    def key_codes(self) -> dict[Action, tuple[int, ...]]:
+        """The key codes bound to each action, ready to test against ``key.get_pressed()``.
+
+        >>> Settings().key_codes()[Action.LEFT] == (pygame.K_LEFT, pygame.K_a)
+        True
+        """
+        return {action: tuple(code for name in self.keys.get(action.value, [])
+                              if (code := key_code(name)) is not None)
+                for action in Action}
+
+    def button_numbers(self) -> dict[Action, tuple[int, ...]]:
+        """The gamepad buttons bound to each action."""
+        return {action: tuple(self.buttons.get(action.value, [])) for action in Action}
+
+    def to_json(self) -> dict[str, Any]:
+        return {"version": SETTINGS_VERSION, "effects_volume": self.effects_volume,
+                "music_volume": self.music_volume, "fullscreen": self.fullscreen,
+                "keys": self.keys, "buttons": self.buttons}
+
+    @classmethod
+    def from_json(cls, data: Any) -> tuple[Settings, list[str]]:
+        """Settings from decoded JSON, and what had to be replaced by a default, and why."""
+        settings = cls()
+        if not isinstance(data, dict):
+            return settings, ["it does not hold a JSON object, so every setting is a default"]
+        problems: list[str] = []
+        for name in ("effects_volume", "music_volume"):
+            if name in data:
+                value = data[name]
+                if _is_number(value) and 0.0 <= value <= 1.0:
+                    setattr(settings, name, float(value))
+                else:
+                    problems.append(f"{name} is {json.dumps(value)}, not a number from 0 to 1 "
+                                    f"(using {getattr(settings, name)})")
+        if "fullscreen" in data:
+            if isinstance(data["fullscreen"], bool):
+                settings.fullscreen = data["fullscreen"]
+            else:
+                problems.append(f"fullscreen is {json.dumps(data['fullscreen'])}, not true or "
+                                f"false (using {json.dumps(settings.fullscreen)})")
+        if "keys" in data:  # every action needs a key: the keyboard is always there
+            _read_bindings(data["keys"], "keys", settings.keys, _key_name_or_none,
+                           "key name pygame knows", False, problems)
+        if "buttons" in data:  # a button list may be empty: the stick and d-pad still move
+            _read_bindings(data["buttons"], "buttons", settings.buttons, _button_or_none,
+                           "button number (0 or more)", True, problems)
+        return settings, problems
+
+
+def settings_file(directory: Path | None = None) -> JsonFile:
+    """The settings file, in :func:`game.app.saves.data_dir` unless another folder is given."""
+    return JsonFile((directory or data_dir()) / SETTINGS_FILE)
+
+
+def _is_number(value: object) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
+def _key_name_or_none(value: object) -> str | None:
+    """A stored key name in pygame's spelling (``"Left"`` -> ``"left"``), or None."""
+    if not isinstance(value, str):
+        return None
+    code = key_code(value)
+    return None if code is None else key_name(code)
+
+
+def _button_or_none(value: object) -> int | None:
+    """A gamepad button number, or None."""
+    if isinstance(value, int) and not isinstance(value, bool) and value >= 0:
+        return value
+    return None
+
+
+def _read_bindings(data: object, section: str, bindings: dict[str, list[T]],
+                   check: Callable[[object], T | None], what: str, allow_none: bool,
+                   problems: list[str]) -> None:
+    """Replace the defaults in ``bindings`` with each action's valid entries from ``data``.
+
+    ``check`` turns one stored entry into its valid form, or None. Actions the game does
+    not have are ignored. Bad entries are left out; an action left with none keeps its
+    defaults, unless the file binds it to nothing on purpose (``[]``) and ``allow_none``.
+    """
+    if not isinstance(data, dict):
+        problems.append(f"{section} is not an object of action names and lists "
+                        "(using the defaults)")
+        return
+    actions = {action.value for action in Action}
+    for action, entries in data.items():
+        if action not in actions:
+            continue
+        if not isinstance(entries, list):
+            problems.append(f"{section}.{action} is {json.dumps(entries)}, not a list "
+                            f"(using {_listed(bindings[action])})")
+            continue
+        valid: list[T] = []
+        for entry in entries:
+            checked = check(entry)
+            if checked is None:
+                problems.append(f"{section}.{action}: {json.dumps(entry)} is not a {what} "
+                                "(left out)")
+            else:
+                valid.append(checked)
+        if valid or (allow_none and not entries):
+            bindings[action] = valid
+        else:
+            problems.append(f"{section}.{action} has no usable entry "
+                            f"(using {_listed(bindings[action])})")
+
+
+def _listed(entries: list[T]) -> str:
+    return ", ".join(str(entry) for entry in entries) or "none"

@@ -1,0 +1,212 @@
+"""The windowed game: title, level select, play, pause, game over and win screens.
+
+Where it sits: above the simulation, beside the headless runner in :mod:`game.app.run`. Each
+frame reads the keyboard and any gamepads, runs the fixed-step loop, and draws. What a
+press does in a menu is decided in :mod:`game.app.menus` (a small state machine this loop only
+feeds and obeys); how pads become actions and menu moves is in :mod:`game.app.gamepad`.
+
+Screens: the title (Play, Level select, Quit), the level select, playing, paused (Esc, P or
+Start; Resume, Restart level, Quit to title), game over and won (Enter or A returns to the
+title). Arrows, W/S, the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B
+go back. A scripted run (``--inputs``) or one given ``--level`` skips the title; a scripted
+run ends at the end of the run, like a headless one.
+"""
+
+from __future__ import annotations
+
+import time
+
+import pygame
+
+from game.app.assets import Assets, load_assets
+from game.app.audio import Audio
+from game.app.frame import render_frame
+from game.app.gamepad import Gamepads, StickEdges, pad_in_use, pad_nav
+from game.app.menus import (
+    Command,
+    HeldOver,
+    LevelEntry,
+    Menus,
+    Nav,
+    QuitGame,
+    RestartLevel,
+    Screen,
+    StartLevel,
+    campaign_levels,
+    ended,
+    key_nav,
+    level_entries,
+    press,
+)
+from game.app.run import EXIT_OK, TARGET_FPS, Run, held_keys
+from game.app.saves import Attempt, Progress, progress_file
+from game.app.screens import (
+    RELOAD_FAILED,
+    draw_error_banner,
+    draw_game_over,
+    draw_level_select,
+    draw_pause,
+    draw_title,
+    draw_win,
+)
+from game.app.settings import Settings, settings_file
+from game.app.watch import FileWatcher
+from game.levels import FIRST_LEVEL, LevelError
+from game.sim.campaign import Campaign, Outcome
+from game.sim.fixed_step import FixedStep
+
+MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT)  # drawn instead of the world
+
+
+def play_in_window(run: Run) -> int:
+    """The interactive loop; returns when the window closes or a scripted run ends."""
+    assets = load_assets()
+    clock = pygame.time.Clock()
+    stepper = FixedStep()
+    scripted = run.script is not None
+    menus = Menus(Screen.PLAYING if scripted or run.args.level else Screen.TITLE)
+    debug = bool(run.args.debug)
+    frame = 0
+    watcher: FileWatcher | None = None
+    reload_error: str | None = None
+    # The player's own files, read only when a person plays (never a scripted or timed run).
+    personal = not scripted and run.args.ticks is None
+    settings_store, progress_store = settings_file(), progress_file()
+    settings, progress, notice = Settings(), Progress(), None
+    if personal:
+        settings, settings_problem = settings_store.load(Settings.from_json, Settings)
+        progress, progress_problem = progress_store.load(Progress.from_json, Progress)
+        notice = settings_problem or progress_problem
+    keys, buttons = settings.key_codes(), settings.button_numbers()
+    if settings.fullscreen:
+        pygame.display.toggle_fullscreen()
+    audio = Audio()  # silent, without a word, when there is no sound card
+    audio.set_volume(settings.effects_volume, settings.music_volume)
+    pads, stick_edges, held_over = Gamepads(), StickEdges(), HeldOver()
+    using_pad = False  # the title shows the controls of the device last pressed
+    levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks and bests read each frame
+    attempt = Attempt()
+    while True:
+        frame_s = clock.tick(TARGET_FPS) / 1000.0
+        frame += 1
+        entries = level_entries(levels, progress)
+        # 1. Events: the window, pads plugged in or out, overlay and fullscreen, menus.
+        for event in pygame.event.get():
+            if event.type == pygame.QUIT:
+                run.write_outputs(pygame.display.get_surface())
+                return EXIT_OK
+            pads.handle(event)
+            using_pad = pad_in_use(event, using_pad)
+            if event.type == pygame.KEYDOWN and event.key == pygame.K_F1:
+                debug = not debug
+            elif event.type == pygame.KEYDOWN and event.key == pygame.K_F11:
+                pygame.display.toggle_fullscreen()
+                settings.fullscreen = not settings.fullscreen
+                if personal:
+                    notice = settings_store.save(settings.to_json()) or notice
+            elif (nav := _nav(event, stick_edges, menus.screen)) is not None:
+                before = menus
+                menus, command = press(menus, nav, entries)
+                if menus != before or command is not None:
+                    audio.play("menu")
+                if isinstance(command, QuitGame):
+                    run.write_outputs(pygame.display.get_surface())
+                    return EXIT_OK
+                if command is not None and (problem := _obey(command, run)) is not None:
+                    menus, notice = before, problem  # stay on the menu and say why
+                if menus.screen is Screen.PLAYING and before.screen is not Screen.PLAYING:
+                    held_over.begin(held_keys(keys) | pads.held(buttons))
+
+        # Reload on save (--watch): a bad save keeps the old level and shows why.
+        if run.args.watch:
+            path = run.campaign.world.level.path
+            if watcher is None or watcher.level_path != path:
+                watcher, reload_error = FileWatcher(path), None
+            elif watcher.poll(time.monotonic()):
+                try:
+                    run.campaign.reload(run.campaign.loader(path))
+                    reload_error = None
+                except LevelError as error:
+                    reload_error = str(error)
+
+        # Music plays while playing, holds its place while paused, stops elsewhere.
+        if menus.screen is Screen.PLAYING:
+            audio.start_music()
+        elif menus.screen is Screen.PAUSED:
+            audio.pause_music()
+        else:
+            audio.stop_music()
+
+        # 2. Ticks: as many fixed 1/60 s steps as real time has paid for, each with what the
+        # keyboard and the pads hold; each tick's events sound, and a finished level is saved.
+        if menus.screen is Screen.PLAYING:
+            for _ in range(stepper.advance(frame_s)):
+                attempt.before_tick(run.campaign)
+                try:
+                    events = run.tick(held_over.filter(held_keys(keys) | pads.held(buttons)))
+                except LevelError as error:  # the next level will not load: say so, go back
+                    menus, notice = Menus(), str(error)
+                    break
+                for tick_event in events:
+                    audio.play(tick_event.kind)
+                finish = attempt.after_tick(run.campaign, events)
+                if finish is not None and personal:
+                    progress.record(finish)
+                    notice = progress_store.save(progress.to_json()) or notice
+                if run.finished():
+                    break
+            if run.finished():
+                if scripted or run.args.ticks is not None:
+                    run.write_outputs(render_frame(run.campaign, debug=debug, assets=assets))
+                    return EXIT_OK
+                menus = ended(menus)
+        else:
+            stepper.advance(0.0)
+
+        # 3. Draw: the world, HUD and overlay (or a menu in their place), then any screen on
+        # top, then a problem to report, if there is one.
+        target = pygame.display.get_surface()
+        if menus.screen not in MENU_SCREENS:
+            render_frame(run.campaign, debug=debug, assets=assets, frame=frame,
+                         fps=clock.get_fps(), update_ms=run.last_update_ms)
+        _draw_screen(target, assets, menus, entries, run.campaign, frame, using_pad)
+        if reload_error is not None:
+            draw_error_banner(target, assets, RELOAD_FAILED + reload_error)
+        elif notice is not None and menus.screen is not Screen.PLAYING:
+            draw_error_banner(target, assets, notice)
+        pygame.display.flip()
+
+
+def _nav(event: pygame.event.Event, stick_edges: StickEdges, screen: Screen) -> Nav | None:
+    """The menu move a key or pad event makes on ``screen``, if any."""
+    return key_nav(event) or pad_nav(event, stick_edges, playing=screen is Screen.PLAYING)
+
+
+def _obey(command: Command, run: Run) -> str | None:
+    """Carry out a menu's command; a level that will not load is a sentence, not a crash."""
+    try:
+        if isinstance(command, StartLevel):
+            run.campaign = Campaign(command.level, run.campaign.tuning, loader=run.campaign.loader)
+        elif isinstance(command, RestartLevel):
+            run.campaign.restart_level()
+    except LevelError as error:
+        return str(error)
+    return None
+
+
+def _draw_screen(target: pygame.Surface, assets: Assets, menus: Menus,
+                 entries: tuple[LevelEntry, ...], campaign: Campaign, frame: int,
+                 using_pad: bool) -> None:
+    """The screen that is up: a menu in place of the world, or over it."""
+    if menus.screen is Screen.TITLE:
+        draw_title(target, assets, frame, menus.title_item, entries, pad=using_pad)
+    elif menus.screen is Screen.LEVEL_SELECT:
+        draw_level_select(target, assets, frame, entries, menus.level_item)
+    elif menus.screen is Screen.PAUSED:
+        draw_pause(target, assets, menus.pause_item)
+    elif menus.screen is Screen.ENDED:
+        if campaign.outcome is Outcome.WON:
+            draw_win(target, assets, campaign)
+        else:
+            draw_game_over(target, assets, campaign)
+

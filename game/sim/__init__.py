@@ -1,0 +1,8 @@
+"""The simulation: a headless, deterministic platformer that never touches the display.
+
+One tick reads top to bottom in :meth:`game.sim.world.World.step`; the swept x and y passes
+are in :mod:`~game.sim.movement`, against the tile grid of :mod:`~game.sim.tilegrid`. Bodies,
+the player, enemies, pickups and platforms are entities that set velocities; only movement
+changes positions. :mod:`~game.sim.campaign` plays levels in order; it is given a loader, so
+the simulation never imports the Tiled loader or the app above it.
+"""

@@ -1,0 +1,73 @@
+"""A moving body: a sprite whose exact position is a float box and whose Rect follows it.
+
+Where it sits: the base of :class:`game.sim.player.Player` and :class:`game.sim.enemy.Enemy`.
+
+What it teaches: pygame 2.6 Rects hold integers, so ``rect.x += 0.4`` never moves anything.
+The true position is the float :class:`~game.collision.aabb.Box`; :meth:`Body.place` is the *one*
+place the Rect is derived from it (with ``math.floor``, inside ``Box.to_rect``), so the
+drawn sprite and the hitbox can never drift apart ("ghost rects").
+"""
+
+from __future__ import annotations
+
+import pygame
+
+from game.collision.aabb import Box
+from game.sim.movement import Move
+from game.sim.platforms import Platform
+from game.sim.tilegrid import TileKind, TileShape
+
+
+class Body(pygame.sprite.Sprite):
+    """A sprite with a float hitbox, a velocity in px/s and its last two axis moves."""
+
+    image: pygame.Surface
+    rect: pygame.Rect
+
+    def __init__(self, box: Box) -> None:
+        super().__init__()
+        self.vx = 0.0  # px/s, right is positive
+        self.vy = 0.0  # px/s, down is positive
+        self.on_ground = False
+        self.standing_on: TileShape | None = None  # what the ground probe found
+        self.riding: Platform | None = None  # the moving platform under the feet, if any
+        self.crushed = False  # a platform pushed it into a wall this tick
+        self.corner_correction_px = 0.0  # how far a head bump may slide past a corner
+        self.last_x: Move | None = None  # recorded for the debug overlay
+        self.last_y: Move | None = None
+        self.image = pygame.Surface((max(1, int(box.w)), max(1, int(box.h))))
+        self.box = box
+        self.rect = box.to_rect()
+
+    def teleport(self, box: Box) -> None:
+        """Place the body somewhere new with no path behind it (a respawn, a level start)."""
+        self.place(box)
+        self.last_x = self.last_y = None
+
+    @property
+    def dropping_through(self) -> bool:
+        """True while the body ignores one-way platforms (the player's down + jump)."""
+        return False
+
+    @property
+    def on_ground_one_way(self) -> bool:
+        return self.standing_on is not None and self.standing_on.kind is TileKind.ONE_WAY
+
+    def react(self, x_move: Move, y_move: Move) -> None:
+        """Respond to what this tick's two axis moves hit; subclasses decide how."""
+
+    def travelled_through(self, region: Box) -> bool:
+        """Did this tick's path (the x step, then the y step) overlap ``region``?
+
+        Testing the path, not just the final box, means a fast body cannot skip over a coin
+        or a spike in one tick: the trigger version of "sweep every move".
+        """
+        moves = [m for m in (self.last_x, self.last_y) if m is not None]
+        if not moves:
+            return self.box.overlaps(region)
+        return any(m.path.overlaps(region) for m in moves)
+
+    def place(self, box: Box) -> None:
+        """Set the exact position; the Rect is derived here and nowhere else."""
+        self.box = box
+        self.rect = box.to_rect()

@@ -1,0 +1,97 @@
+"""A run of the game: the current level, lives, score, and moving on from level to level.
+
+Where it sits: above :class:`game.sim.world.World`. The world says what happened in a tick
+(coins, stomps, hurts, the exit); the campaign keeps the score and decides what follows:
+the next level (the map property ``next_level``), the win, or game over.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from enum import Enum
+from pathlib import Path
+
+from game.sim.inputs import Actions
+from game.sim.level import Level
+from game.sim.movement import penetration_depth
+from game.sim.tuning import Tuning
+from game.sim.world import Event, EventKind, World
+
+
+class Outcome(Enum):
+    RUNNING = "running"
+    WON = "won"
+    GAME_OVER = "game_over"
+
+
+LevelLoader = Callable[[Path], Level]
+
+
+class Campaign:
+    """Plays levels in order from ``first_level`` until the last exit or the last life."""
+
+    def __init__(self, first_level: Path, tuning: Tuning | None = None, *,
+                 loader: LevelLoader) -> None:
+        self.tuning = tuning or Tuning()
+        self.loader = loader
+        self.world = World(loader(first_level), self.tuning)
+        self.outcome = Outcome.RUNNING
+        self.ticks = 0
+        self.lives = self.tuning.start_lives
+        self.deaths = 0
+        self.score = 0
+        self.coins_collected = 0
+        self.enemies_stomped = 0
+        self.levels_completed = 0
+        self.max_penetration_px = 0.0
+        self.last_events: list[Event] = []
+
+    def tick(self, held: Actions) -> list[Event]:
+        """Advance one tick; does nothing once the run has been won or lost."""
+        if self.outcome is not Outcome.RUNNING:
+            return []
+        events = self.world.step(held)
+        self.ticks += 1
+        self.max_penetration_px = max(self.max_penetration_px, self.world.max_penetration_px)
+        for event in events:
+            if event.kind is EventKind.COIN:
+                self.coins_collected += 1
+                self.score += event.value
+            elif event.kind is EventKind.STOMP:
+                self.enemies_stomped += 1
+            elif event.kind is EventKind.HURT:
+                self.deaths += 1
+                self.lives -= 1
+                if self.lives <= 0:
+                    self.outcome = Outcome.GAME_OVER
+            elif event.kind is EventKind.EXIT:
+                self._complete_level()
+        self.last_events = events
+        return events
+
+    def _complete_level(self) -> None:
+        self.levels_completed += 1
+        next_level = self.world.level.next_level
+        if next_level is None:
+            self.outcome = Outcome.WON
+        else:
+            self.world = World(self.loader(next_level), self.tuning)
+
+    def reload(self, level: Level) -> None:
+        """Swap in a new version of the current level (``--watch``), keeping the run going.
+
+        The player keeps its place and speed where the new map leaves that place free;
+        otherwise it starts again at the new spawn. Coins and enemies come from the new map.
+        """
+        old = self.world.player
+        self.world = World(level, self.tuning)
+        player = self.world.player
+        if (penetration_depth(self.world.solids, old.box) == 0.0
+                and old.box.top < level.grid.height_px):
+            player.teleport(old.box)
+            player.vx, player.vy, player.facing = old.vx, old.vy, old.facing
+            self.world.probe_ground(player)
+
+    def restart_level(self) -> None:
+        """Start the current level again from its spawn (the pause menu's Restart)."""
+        self.world = World(self.world.level, self.tuning)

@@ -1,0 +1,67 @@
+"""Enemies: walkers that patrol a floor, and hoppers that patrol it in hops.
+
+Where it sits: step 1 of a tick chooses each enemy's velocity; the enemies then move with
+the same axis passes as the player (:mod:`game.sim.movement`), and :meth:`Enemy.react` turns
+them round when a wall stops them. Both kinds turn back at a ledge rather than fall off it.
+"""
+
+from __future__ import annotations
+
+from enum import Enum
+
+from game.collision.aabb import Box
+from game.sim.body import Body
+from game.sim.movement import Move
+from game.sim.tilegrid import Solids, TileKind
+from game.sim.tuning import Tuning
+
+LEDGE_PROBE_PX = 1.0  # size of the square looked at just beyond the leading foot
+
+
+class EnemyKind(Enum):
+    WALKER = "walker"
+    HOPPER = "hopper"
+
+
+class Enemy(Body):
+    """Patrols at ``speed_px_s``, starting towards the left; a hopper only moves mid-hop."""
+
+    def __init__(self, box: Box, speed_px_s: float, kind: EnemyKind = EnemyKind.WALKER,
+                 ) -> None:
+        super().__init__(box)
+        self.speed_px_s = speed_px_s
+        self.kind = kind
+        self.direction = -1
+        self.rest_ticks_left = 0
+
+    def decide(self, grid: Solids, tuning: Tuning) -> None:
+        """Turn at a ledge, then walk (or hop) on, and fall."""
+        if self.on_ground and not self._ground_ahead(grid):
+            self.direction = -self.direction
+        self.vx = self.direction * self.speed_px_s
+        if self.kind is EnemyKind.HOPPER:
+            self._hop(tuning)
+        self.vy = min(self.vy + tuning.gravity_px_s2 * tuning.tick_s,
+                      tuning.max_fall_speed_px_s)
+
+    def _hop(self, tuning: Tuning) -> None:
+        if not self.on_ground:
+            return
+        if self.rest_ticks_left > 0:
+            self.rest_ticks_left -= 1
+            self.vx = 0.0
+            return
+        self.vy = -tuning.hopper_jump_speed_px_s
+        self.rest_ticks_left = tuning.hopper_rest_ticks
+
+    def _ground_ahead(self, grid: Solids) -> bool:
+        box = self.box
+        front = box.right if self.direction > 0 else box.left - LEDGE_PROBE_PX
+        probe = Box(front, box.bottom, LEDGE_PROBE_PX, LEDGE_PROBE_PX)
+        return any(s.kind is not TileKind.HAZARD for s in grid.shapes_in(probe))
+
+    def react(self, x_move: Move, y_move: Move) -> None:
+        if x_move.hit is not None:
+            self.direction = -self.direction
+        if y_move.hit is not None:
+            self.vy = 0.0

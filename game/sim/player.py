@@ -1,0 +1,127 @@
+"""The player: turns held actions into a velocity, and reacts to what its moves hit.
+
+Where it sits: step 1 of a tick chooses the velocity (:meth:`Player.decide`); steps 3-4 move
+it (:mod:`game.sim.movement`); :meth:`Player.react` then reads the hits. The player never moves
+itself, so there is exactly one place positions change.
+
+What it teaches: the forgiving rules that make a platformer feel good, each a tunable in
+:class:`game.sim.tuning.Tuning` and a test in ``tests/test_feel.py``:
+
+* **Acceleration and friction**: the run speed approaches its target at a rate derived from
+  a time to full speed (quicker on the ground than in the air).
+* **Variable jump height**: letting go of jump while rising cuts the upward speed.
+* **Coyote time**: a jump pressed a few ticks after running off a ledge still happens.
+* **Jump buffering**: a jump pressed a few ticks before landing happens on landing.
+* **Drop through**: down + jump on a one-way platform falls through it.
+"""
+
+from __future__ import annotations
+
+from game.collision.aabb import Box
+from game.sim.body import Body
+from game.sim.inputs import Action, Actions
+from game.sim.movement import Move, Side
+from game.sim.tuning import Tuning
+
+DROP_THROUGH_TICKS = 8  # how long one-way platforms are ignored after down + jump
+
+
+def approach(value: float, target: float, step: float) -> float:
+    """Move ``value`` towards ``target`` by at most ``step``.
+
+    >>> approach(0.0, 90.0, 30.0), approach(80.0, 90.0, 30.0), approach(10.0, 0.0, 30.0)
+    (30.0, 90.0, 0.0)
+    """
+    if value < target:
+        return min(value + step, target)
+    return max(value - step, target)
+
+
+class Player(Body):
+    """The hero. ``facing`` is +1 (right) or -1 (left), kept for drawing."""
+
+    def __init__(self, box: Box, tuning: Tuning) -> None:
+        super().__init__(box)
+        self.corner_correction_px = tuning.corner_correction_px
+        self.facing = 1
+        self.coyote_ticks_left = 0       # ticks in which a jump still counts as from the ground
+        self.jump_buffer_ticks_left = 0  # ticks in which an early jump press is remembered
+        self.rising_from_jump = False    # a jump is under way and may still be cut short
+        self.drop_ticks_left = 0         # ticks one-way platforms are ignored
+        self.invulnerable_ticks_left = 0
+        self._jump_was_held = False
+
+    @property
+    def dropping_through(self) -> bool:
+        return self.drop_ticks_left > 0
+
+    @property
+    def invulnerable(self) -> bool:
+        return self.invulnerable_ticks_left > 0
+
+    def decide(self, held: Actions, tuning: Tuning) -> bool:
+        """Set the velocity for this tick from the held actions; True if a jump started."""
+        # Run: approach the target speed at the ground or air rate.
+        direction = (Action.RIGHT in held) - (Action.LEFT in held)
+        target = direction * tuning.run_speed_px_s
+        speeding_up = direction != 0 and (self.vx * direction >= 0)
+        self.vx = approach(self.vx, target, tuning.run_change_px_s(self.on_ground, speeding_up))
+        if direction:
+            self.facing = direction
+
+        # Jump timers: the buffer remembers a press, coyote time remembers the ground.
+        jump_held = Action.JUMP in held
+        pressed = jump_held and not self._jump_was_held
+        self._jump_was_held = jump_held
+        self.jump_buffer_ticks_left = (tuning.jump_buffer_ticks + 1 if pressed
+                                       else max(0, self.jump_buffer_ticks_left - 1))
+        self.coyote_ticks_left = (tuning.coyote_ticks + 1 if self.on_ground
+                                  else max(0, self.coyote_ticks_left - 1))
+        self.drop_ticks_left = max(0, self.drop_ticks_left - 1)
+        self.invulnerable_ticks_left = max(0, self.invulnerable_ticks_left - 1)
+
+        jumped = False
+        if pressed and Action.DOWN in held and self.on_ground_one_way:
+            self.drop_ticks_left = DROP_THROUGH_TICKS
+            self.jump_buffer_ticks_left = 0
+        elif self.jump_buffer_ticks_left and self.coyote_ticks_left:
+            self.vy = -tuning.jump_speed_px_s
+            self.on_ground = False
+            self.rising_from_jump = True
+            self.jump_buffer_ticks_left = self.coyote_ticks_left = 0
+            jumped = True
+
+        # Variable height: releasing jump while rising keeps only part of the speed.
+        if self.rising_from_jump and (self.vy >= 0 or not jump_held):
+            if self.vy < 0:
+                self.vy *= tuning.jump_cut_ratio
+            self.rising_from_jump = False
+
+        self.vy = min(self.vy + tuning.gravity_px_s2 * tuning.tick_s,
+                      tuning.max_fall_speed_px_s)
+        return jumped
+
+    def react(self, x_move: Move, y_move: Move) -> None:
+        """Stop the velocity on the axis that hit something."""
+        if x_move.hit is not None:
+            self.vx = 0.0
+        if y_move.hit is not None and (
+            (y_move.hit.side is Side.BOTTOM and self.vy > 0)
+            or (y_move.hit.side is Side.TOP and self.vy < 0)
+        ):
+            self.vy = 0.0
+            self.rising_from_jump = False
+
+    def bounce(self, speed_px_s: float) -> None:
+        """Spring upwards (after a stomp)."""
+        self.vy = -speed_px_s
+        self.on_ground = False
+        self.rising_from_jump = False
+
+    def respawn(self, box: Box, invulnerable_ticks: int = 0) -> None:
+        self.teleport(box)
+        self.vx = self.vy = 0.0
+        self.on_ground = False
+        self.rising_from_jump = False
+        self.coyote_ticks_left = self.jump_buffer_ticks_left = 0
+        self.invulnerable_ticks_left = invulnerable_ticks

@@ -1,0 +1,318 @@
+"""One level in play, and the tick that advances it by 1/60 s.
+
+Where it sits: the middle of the game. :meth:`World.step` is the whole update, in order,
+in one function; the campaign (:mod:`game.sim.campaign`) calls it once per tick and the
+renderer (:mod:`game.app.render`) only reads what it leaves behind.
+
+The order of a tick, pinned by ``tests/test_world.py``:
+
+1. **Intent**: the player reads the held actions, the enemies look ahead; each sets a velocity.
+2. **x pass**: every body moves along x, swept against the tile grid, stopping flush.
+3. **y pass**: every body moves along y the same way; the 1-pixel probe sets ``on_ground``.
+4. **React**: bodies read what their moves hit (land, bump, turn round).
+5. **Pickups**: coins by ``groupcollide`` with ``dokill``, on the path the player travelled.
+6. **Contacts**: the pairs the player touches; a tracker turns them into start/end events
+   (entering the exit completes the level).
+7. **Enemies and hazards**: a touch from above is a stomp, any other touch hurts, and so do
+   spikes, for as long as they are touched.
+8. **The void**: falling below the map costs a life; the player respawns at the spawn.
+9. **Camera**: follows the player.
+
+Solids never go through ``groupcollide``: walls only meet bodies in the movement code.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from enum import Enum
+
+import pygame
+
+from game.collision.aabb import Box
+from game.collision.contacts import ContactTracker
+from game.sim.body import Body
+from game.sim.camera import Camera
+from game.sim.enemy import Enemy, EnemyKind
+from game.sim.inputs import Actions
+from game.sim.level import Level
+from game.sim.movement import (
+    Move,
+    Side,
+    ground_under,
+    move_x,
+    move_y,
+    nearest_free_place,
+    penetration_depth,
+    slide_past_ceiling_corner,
+    touching,
+)
+from game.sim.pickups import Checkpoint, Coin, Exit, Trigger
+from game.sim.platforms import Platform, SolidsWithPlatforms
+from game.sim.player import Player
+from game.sim.tilegrid import TileKind
+from game.sim.tuning import Tuning
+
+
+def _push_needed(pusher: Box, body: Box, axis: str, step: float) -> float:
+    """How far ``body`` must move along ``axis`` to sit flush against the moving ``pusher``."""
+    if axis == "x":
+        return pusher.right - body.left if step > 0 else pusher.left - body.right
+    return pusher.bottom - body.top if step > 0 else pusher.top - body.bottom
+
+
+SQUASH_TICKS = 20  # how long a stomped enemy stays on screen, flattened
+SKY_LIMIT_PX = 1_000_000.0  # how far above the map a body may fly before the sky stops it
+
+
+ContactKey = tuple[str, int]  # ("player", 0), ("enemy", 3), ("exit", 0), ("hazard", cell)
+PLAYER_KEY: ContactKey = ("player", 0)
+
+
+class EventKind(Enum):
+    COIN = "coin"
+    STOMP = "stomp"
+    HURT = "hurt"
+    EXIT = "exit"
+    JUMP = "jump"
+    CHECKPOINT = "checkpoint"
+
+
+@dataclass(frozen=True)
+class Event:
+    """Something that happened in a tick, for the campaign, the sounds and the HUD."""
+
+    kind: EventKind
+    value: int = 0
+    where: Box | None = None
+
+
+@dataclass(frozen=True)
+class Squash:
+    """Where an enemy was stomped, kept a few ticks so the renderer can show it flattened."""
+
+    box: Box
+    ticks_left: int
+
+
+@dataclass
+class TickStats:
+    """What the last tick cost, recorded for the debug overlay and the report."""
+
+    cells_visited: int = 0
+    shapes_tested: int = 0
+    collision_s: float = 0.0
+
+
+def crossed(body: Body, thing: Trigger | Enemy) -> bool:
+    """``collided=`` for pygame.sprite: did the body's path this tick overlap the thing?"""
+    return body.travelled_through(thing.box)
+
+
+@dataclass
+class World:
+    """A level's live state: its bodies, its groups, its camera and its last tick's record."""
+
+    level: Level
+    tuning: Tuning = field(default_factory=Tuning)
+    camera: Camera = field(default_factory=Camera)
+
+    def __post_init__(self) -> None:
+        self.tuning = self.tuning.with_map_properties(self.level.properties)
+        self.grid = self.level.grid
+        self.platforms: pygame.sprite.Group[Platform] = pygame.sprite.Group(
+            Platform(spec, number) for number, spec in enumerate(self.level.platforms))
+        self.solids = SolidsWithPlatforms(self.grid, list(self.platforms))
+        self.checkpoints: pygame.sprite.Group[Checkpoint] = pygame.sprite.Group(
+            Checkpoint(box) for box in self.level.checkpoints)
+        self.checkpoint_reached: int | None = None
+        self.squashed: list[Squash] = []  # stomped enemies, shown flat for a moment
+        # A spawn drawn inside a wall is moved to the nearest free place before play starts.
+        self.spawn = nearest_free_place(self.grid, self.level.spawn)
+        self.player = Player(self.spawn, self.tuning)
+        self.players: pygame.sprite.GroupSingle[Player] = pygame.sprite.GroupSingle(self.player)
+        self.enemies: pygame.sprite.Group[Enemy] = pygame.sprite.Group(
+            Enemy(nearest_free_place(self.grid, spec.box),
+                  spec.speed_px_s if spec.speed_px_s is not None
+                  else self.tuning.enemy_speed_px_s, EnemyKind(spec.kind))
+            for spec in self.level.enemies)
+        self.coins: pygame.sprite.Group[Coin] = pygame.sprite.Group(
+            Coin(spec.box, spec.value) for spec in self.level.coins)
+        self.exits: pygame.sprite.Group[Exit] = pygame.sprite.Group(
+            Exit(box) for box in self.level.exits)
+        self.enemy_by_number = dict(enumerate(self.enemies))
+        self.contacts: ContactTracker[ContactKey] = ContactTracker()
+        self.stats = TickStats()
+        self.max_penetration_px = 0.0
+        self.probe_ground(self.player)
+        self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
+
+    def bodies(self) -> list[Body]:
+        """Everything that moves, in the order it moves: the player, then enemies."""
+        return [self.player, *self.enemies]
+
+    def step(self, held: Actions) -> list[Event]:
+        """Advance the level by one tick of ``tuning.tick_s`` seconds."""
+        events: list[Event] = []
+        dt = self.tuning.tick_s
+        self.grid.stats.reset()
+        started = time.perf_counter()
+
+        self.squashed = [Squash(s.box, s.ticks_left - 1) for s in self.squashed
+                         if s.ticks_left > 1]
+
+        # 1. Intent: entities choose velocities; none of them moves itself.
+        if self.player.decide(held, self.tuning):
+            events.append(Event(EventKind.JUMP))
+        for enemy in self.enemies:
+            enemy.decide(self.solids, self.tuning)
+        bodies = self.bodies()
+        before = {body: body.box for body in bodies}
+        for body in bodies:
+            body.crushed = False
+
+        # 2. Platforms: each moves along its path, pushing what is in its way and carrying
+        #    what rides it, through the same swept moves (so never into a wall).
+        for platform in self.platforms:
+            self._move_platform(platform, *platform.next_step(dt))
+
+        # 3. x pass: move along x and stop flush at the first solid face swept.
+        for body in bodies:
+            body.last_x = move_x(self.solids, body.box, body.vx * dt)
+            body.place(body.last_x.box)
+
+        # 4. y pass: the same along y, then probe one pixel below the feet.
+        for body in bodies:
+            self._move_y(body, body.vy * dt)
+            self.probe_ground(body)
+
+        # 5. React: each body reads what its own moves hit.
+        for body in bodies:
+            assert body.last_x is not None and body.last_y is not None
+            body.react(body.last_x, body.last_y)
+
+        # 6. Pickups: coins vanish from their group as they are collected.
+        for coins in pygame.sprite.groupcollide(
+                self.players, self.coins, False, True, collided=crossed).values():
+            events.extend(Event(EventKind.COIN, coin.value, coin.box) for coin in coins)
+
+        # 7. Contacts: what the player touches now. The tracker reports only what changed,
+        #    so entering the exit is one event however long the player stands in it.
+        touching_now = self._player_contacts()
+        changes = self.contacts.update(touching_now)
+        for kind, number in (key for pair in changes.started for key in pair):
+            if kind == "exit":
+                events.append(Event(EventKind.EXIT))
+            elif kind == "checkpoint":
+                self.spawn = self._checkpoint_spawn(number)
+                self.checkpoint_reached = number
+                events.append(Event(EventKind.CHECKPOINT, number))
+
+        # 8. Enemies: landing on top is a stomp; any other touch hurts. Spikes hurt for as
+        #    long as they are touched (not only on contact), so standing in them when the
+        #    invulnerability runs out still costs a life.
+        hurt = False
+        for _, (kind, number) in sorted(touching_now):
+            if kind == "enemy":
+                enemy = self.enemy_by_number[number]
+                if self._came_from_above(before[self.player], before[enemy]):
+                    enemy.kill()
+                    self.squashed.append(Squash(enemy.box, SQUASH_TICKS))
+                    self.player.bounce(self.tuning.stomp_bounce_px_s)
+                    events.append(Event(EventKind.STOMP, 1, enemy.box))
+                elif not self.player.invulnerable:
+                    hurt = True
+            elif kind == "hazard" and not self.player.invulnerable:
+                hurt = True
+
+        # 9. The void and the crush: falling below the map, or being pushed into a wall by a
+        #    platform, costs a life (and removes an enemy).
+        if self.player.box.top >= self.grid.height_px or self.player.crushed:
+            hurt = True
+        for enemy in self.enemies:
+            if enemy.box.top >= self.grid.height_px or enemy.crushed:
+                enemy.kill()
+        if hurt and not any(e.kind is EventKind.EXIT for e in events):
+            events.append(Event(EventKind.HURT, 1, self.player.box))
+            self.player.respawn(self.spawn, self.tuning.invulnerable_ticks)
+
+        self.stats = TickStats(self.grid.stats.cells_visited, self.grid.stats.shapes_tested,
+                               time.perf_counter() - started)
+        # Measurement only: how deep does any body sit in a solid after resolution?
+        for body in self.bodies():
+            self.max_penetration_px = max(self.max_penetration_px,
+                                          penetration_depth(self.solids, body.box))
+
+        # 10. Camera: follow the player, inside the map.
+        self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
+        return events
+
+    def probe_ground(self, body: Body) -> None:
+        """The one-pixel probe under the feet: what the body stands (or rides) on, if anything."""
+        body.standing_on = ground_under(self.solids, body.box,
+                                        through_one_way=body.dropping_through)
+        body.on_ground = body.standing_on is not None
+        body.riding = self.solids.platform_of(body.standing_on)
+
+    def _player_contacts(self) -> set[tuple[ContactKey, ContactKey]]:
+        """The pairs (player, thing) whose boxes the player's path overlapped this tick."""
+        player = self.player
+        pairs = {(PLAYER_KEY, ("exit", number)) for number, goal in enumerate(self.exits)
+                 if crossed(player, goal)}
+        pairs |= {(PLAYER_KEY, ("checkpoint", number))
+                  for number, flag in enumerate(self.checkpoints) if crossed(player, flag)}
+        pairs |= {(PLAYER_KEY, ("enemy", number)) for number, enemy in
+                  self.enemy_by_number.items() if enemy.alive() and crossed(player, enemy)}
+        for move in (player.last_x, player.last_y):
+            if move is not None:
+                pairs |= {(PLAYER_KEY, ("hazard", shape.row * self.grid.cols + shape.col))
+                          for shape in touching(self.grid, move.path, TileKind.HAZARD)}
+        return pairs
+
+    def _move_y(self, body: Body, dy: float) -> None:
+        """The y pass for one body, with corner correction for a rise that clips a ceiling."""
+        move = move_y(self.solids, body.box, dy, through_one_way=body.dropping_through)
+        if move.hit is not None and move.hit.side is Side.TOP and body.corner_correction_px:
+            slid = slide_past_ceiling_corner(self.solids, body.box, dy,
+                                             body.corner_correction_px)
+            if slid is not None:
+                side, move = slid
+                run = body.last_x or side
+                body.last_x = Move(side.box, run.hit, run.swept.union(side.swept), run.start)
+        # Below the map is the void (a lost life) and far above it the sky ends, so a body
+        # flung at any speed keeps coordinates that a Rect can hold.
+        y = min(max(move.box.y, -SKY_LIMIT_PX), float(self.grid.height_px))
+        if y != move.box.y:
+            move = Move(move.box._replace(y=y), move.hit, move.swept, move.start)
+        body.last_y = move
+        body.place(move.box)
+
+    def _move_platform(self, platform: Platform, dx: float, dy: float) -> None:
+        """Move a platform one axis at a time, pushing bodies in its way and carrying riders."""
+        riders = [body for body in self.bodies() if body.riding is platform]
+        others = self.solids.without(platform)
+        for step, axis in ((dx, "x"), (dy, "y")):
+            if step == 0:
+                continue
+            platform.place(platform.box.moved(dx=step) if axis == "x"
+                           else platform.box.moved(dy=step))
+            move = move_x if axis == "x" else move_y
+            for body in self.bodies():
+                if body.box.overlaps(platform.box):
+                    body.place(move(others, body.box, _push_needed(platform.box, body.box,
+                                                                   axis, step)).box)
+                    body.crushed = body.box.overlaps(platform.box)
+                elif body in riders:
+                    body.place(move(others, body.box, step).box)
+
+    def _checkpoint_spawn(self, number: int) -> Box:
+        """Where the player comes back after touching checkpoint ``number``: standing in it."""
+        flag = list(self.checkpoints)[number].box
+        w, h = self.level.spawn.w, self.level.spawn.h
+        return nearest_free_place(self.solids, Box(flag.x + (flag.w - w) / 2,
+                                                   flag.bottom - h, w, h))
+
+    @staticmethod
+    def _came_from_above(player_before: Box, enemy_before: Box) -> bool:
+        """A stomp: the player's feet were at or above the enemy's head before this tick."""
+        return player_before.bottom <= enemy_before.top

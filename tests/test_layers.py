@@ -1,0 +1,128 @@
+"""The package layout is the architecture: dependencies point one way, and no two modules
+import each other.
+
+The layers, lowest first (each may import only those before it):
+
+1. ``game.collision``: the collision reference, pure geometry a reader can copy.
+2. ``game.sim``: the headless simulation that uses it.
+3. ``game.levels``: the Tiled loader, which builds a simulation's level.
+4. ``game.app``: the window, screens, rendering, files and the command line.
+5. ``game.demos``, ``game.tools``, ``game.bench``, ``game.lab``: programs beside the game.
+
+Every ``import`` counts, including those inside functions: a lazy import is still a
+dependency, it only hides it.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+GAME = Path(__file__).resolve().parent.parent / "game"
+
+LAYER = {"collision": 1, "sim": 2, "levels": 3, "app": 4,
+         "demos": 5, "tools": 5, "bench": 5, "lab": 5}
+
+
+def module_name(path: Path) -> str:
+    parts = path.relative_to(GAME.parent).with_suffix("").parts
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def imports_of(path: Path) -> set[str]:
+    """Every ``game`` module this file imports, anywhere in it, resolved to a module name."""
+    here = module_name(path)
+    package = here if path.name == "__init__.py" else here.rpartition(".")[0]
+    found: set[str] = set()
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Import):
+            found.update(a.name for a in node.names if a.name.split(".")[0] == "game")
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package.split(".")[: len(package.split(".")) - node.level + 1]
+                name = ".".join(base + ([node.module] if node.module else []))
+            else:
+                name = node.module or ""
+            if name.split(".")[0] != "game":
+                continue
+            # `from game.sim import world` names a module, not a symbol: count the module,
+            # and the package only when a symbol of its own is imported.
+            for alias in node.names:
+                submodule = f"{name}.{alias.name}"
+                if (GAME.parent / submodule.replace(".", "/")).with_suffix(".py").exists():
+                    found.add(submodule)
+                else:
+                    found.add(name)
+    return found - {here}
+
+
+MODULES = {module_name(p): p for p in sorted(GAME.rglob("*.py"))}
+GRAPH = {name: {m for m in imports_of(path) if m in MODULES} for name, path in MODULES.items()}
+
+
+def layer_of(module: str) -> int | None:
+    parts = module.split(".")
+    return LAYER.get(parts[1]) if len(parts) > 1 else None
+
+
+def test_every_module_of_the_game_sits_in_a_layer() -> None:
+    top_level = {"game", "game.__main__"}
+    loose = [m for m in MODULES if m not in top_level and layer_of(m) is None]
+    assert loose == [], f"modules outside the layered packages: {loose}"
+
+
+@pytest.mark.parametrize("module", sorted(MODULES))
+def test_no_module_imports_a_higher_layer(module: str) -> None:
+    mine = layer_of(module)
+    if mine is None:
+        return  # game/__init__.py and game/__main__.py sit on top
+    upward = sorted(m for m in GRAPH[module] if (layer_of(m) or 99) > mine)
+    assert upward == [], f"{module} (layer {mine}) imports a higher layer: {upward}"
+
+
+def test_the_collision_reference_imports_nothing_else_of_the_game() -> None:
+    outside = {m: sorted(d for d in deps if layer_of(d) != 1)
+               for m, deps in GRAPH.items() if layer_of(m) == 1}
+    assert {m: d for m, d in outside.items() if d} == {}
+
+
+def test_demos_tools_and_bench_do_not_import_each_other() -> None:
+    side = {"demos", "tools", "bench", "lab"}
+    crossing = {m: sorted(d for d in deps if d.split(".")[1] in side
+                          and d.split(".")[1] != m.split(".")[1])
+                for m, deps in GRAPH.items() if layer_of(m) == 5}
+    assert {m: d for m, d in crossing.items() if d} == {}
+
+
+def test_no_import_cycles() -> None:
+    """A depth-first search that meets a module already on its own path has found a cycle."""
+    on_path: list[str] = []
+    done: set[str] = set()
+    cycles: list[list[str]] = []
+
+    def visit(module: str) -> None:
+        if module in done:
+            return
+        if module in on_path:
+            cycles.append([*on_path[on_path.index(module):], module])
+            return
+        on_path.append(module)
+        for dep in sorted(GRAPH[module]):
+            visit(dep)
+        on_path.pop()
+        done.add(module)
+
+    for module in sorted(GRAPH):
+        visit(module)
+    assert cycles == []
+
+
+def test_the_import_reader_finds_known_imports() -> None:
+    """The import reader itself works: it resolves absolute, relative and `from package import
+    module` forms, so the tests above cannot pass by reading nothing."""
+    assert "game.sim.world" in GRAPH["game.sim.campaign"]
+    assert "game.collision.aabb" in GRAPH["game.sim.movement"]
+    assert "game.levels.errors" in GRAPH["game.levels"]
+    assert len(MODULES) > 50
