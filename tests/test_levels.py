@@ -8,10 +8,13 @@ from pathlib import Path
 
 import pytest
 
+from game.collision.aabb import Box
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
+from game.levels.loader import check_level
 from game.sim.campaign import Campaign, Outcome
-from game.sim.inputs import InputScript
+from game.sim.inputs import Action, InputScript
 from game.sim.tilegrid import TileKind
+from game.sim.world import EventKind, World
 from tests.maps import write_tmx
 
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
@@ -81,3 +84,49 @@ def test_the_whole_campaign_is_won_from_the_first_level_to_the_win() -> None:
         assert campaign.ticks < 60 * 60 * 5
     assert campaign.outcome is Outcome.WON
     assert campaign.levels_completed == len(SHIPPED) and campaign.deaths == 0
+
+
+def _copy_of_first_level(folder: Path, lift_exit_px: int) -> Path:
+    """The first level and its tileset copied into ``folder``, its Exit raised ``lift_exit_px``."""
+    assets = LEVELS_DIR.parent / "assets"
+    (folder / "levels").mkdir()
+    (folder / "assets").mkdir()
+    for name in ("tiles.tsx", "tiles.png"):
+        (folder / "assets" / name).write_bytes((assets / name).read_bytes())
+    text = FIRST_LEVEL.read_text(encoding="utf-8")
+    exit_box = load_level(FIRST_LEVEL).exits[0]
+    old = f'type="Exit" x="{exit_box.x:g}" y="{exit_box.y:g}"'
+    assert old in text
+    copy = folder / "levels" / FIRST_LEVEL.name
+    copy.write_text(text.replace(old, f'type="Exit" x="{exit_box.x:g}" '
+                                      f'y="{exit_box.y - lift_exit_px:g}"'), encoding="utf-8")
+    return copy
+
+
+@pytest.mark.parametrize("lift_px", [0, 16])
+def test_an_exit_lifted_off_the_ground_gets_the_floating_warning(tmp_path: Path,
+                                                                 lift_px: int) -> None:
+    findings = check_level(_copy_of_first_level(tmp_path, lift_px))
+    floating = [str(w) for w in findings.warnings if "floats" in str(w)]
+    assert findings.errors == []
+    if lift_px:
+        assert len(floating) == 1 and "object #14 'Exit'" in floating[0]
+    else:
+        assert floating == []
+
+
+@pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
+def test_every_exit_is_reached_by_walking_along_the_ground_to_it(level: Path) -> None:
+    """Start on the ground three tiles before each Exit and hold the way to it: no jump."""
+    loaded = load_level(level)
+    for goal in loaded.exits:
+        world = World(loaded)
+        towards = Action.RIGHT if goal.x > world.player.box.x else Action.LEFT
+        side = -1 if towards is Action.RIGHT else 1
+        start = Box(goal.x + side * 3 * loaded.grid.tile_w, goal.bottom - world.player.box.h,
+                    world.player.box.w, world.player.box.h)
+        world.player.teleport(start)
+        world.probe_ground(world.player)
+        assert world.player.on_ground, f"no ground to stand on before the exit at {goal}"
+        events = [event.kind for _ in range(60) for event in world.step(frozenset({towards}))]
+        assert EventKind.EXIT in events and EventKind.JUMP not in events

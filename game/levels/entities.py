@@ -109,6 +109,16 @@ def _check_inside(o: MapObject, box: Box, header: MapHeader, findings: Findings)
                       "move it onto the map")
 
 
+def _rests_on_ground(box: Box, grid: TileGrid) -> bool:
+    """Does the row of pixels just under ``box`` touch a Solid or OneWay tile?
+
+    An Exit or a Checkpoint is a flag on a pole: it should stand on something, both to look
+    built and so that a player walking along the ground runs into it."""
+    under = Box(box.x, box.bottom, box.w, 1)
+    return any(shape.kind in (TileKind.SOLID, TileKind.ONE_WAY)
+               for shape in grid.shapes_in(under))
+
+
 def _warn_unknown(objects: list[MapObject], findings: Findings) -> None:
     """One warning per class the game does not know, naming its first object."""
     by_class: dict[str, list[MapObject]] = defaultdict(list)
@@ -170,10 +180,12 @@ def build_entities(objects: list[MapObject], header: MapHeader, grid: TileGrid,
             coins.append(CoinSpec(box, int(values["value"])))
         elif o.cls == "enemy":
             enemies.append(EnemySpec(box, float(values["speed"]), str(values["kind"])))
-        elif o.cls == "checkpoint":
-            checkpoints.append(box)
         else:
-            exits.append(box)
+            (checkpoints if o.cls == "checkpoint" else exits).append(box)
+            if not _rests_on_ground(box, grid):
+                findings.warn(o.place, f"the {cls.name} floats: no Solid or OneWay tile is "
+                              "right under it", f"move the {cls.name} down until its bottom "
+                              "edge rests on the ground")
     if not spawns:
         findings.fail("", "this map has no Player object",
                       "add a point or rectangle with Class 'Player' on an object layer")
