@@ -27,6 +27,7 @@ from game.app.menus import (
     Screen,
     StartLevel,
     campaign_levels,
+    cleared,
     ended,
     key_nav,
     level_entries,
@@ -252,6 +253,26 @@ def test_the_end_of_a_run_waits_for_enter_or_a_then_shows_the_title() -> None:
         drive = Driver(entries(), ended(Menus(Screen.PLAYING)))
         assert drive.menus.screen is Screen.ENDED
         assert drive.send(key(pygame.K_DOWN), confirm).menus.screen is Screen.TITLE
+
+
+def test_enter_after_a_game_over_reached_from_the_level_select_plays_on() -> None:
+    progress = Progress()
+    progress.complete_level(ONE.name, 900, 2, next_level=TWO.name)
+    drive = Driver(entries(progress))
+    drive.send(key(pygame.K_DOWN), key(pygame.K_RETURN), key(pygame.K_RETURN))  # select, play
+    assert drive.menus.screen is Screen.PLAYING
+    drive.menus = ended(drive.menus)                          # the last life is lost
+    drive.send(key(pygame.K_RETURN), key(pygame.K_RETURN))     # to the title, then Enter
+    assert drive.menus.screen is Screen.PLAYING
+    assert drive.commands == [StartLevel(TWO), StartLevel(TWO)]
+
+
+def test_the_level_end_banner_gives_way_to_play_on_enter_or_a() -> None:
+    for confirm in (key(pygame.K_RETURN), button(BUTTON_A)):
+        drive = Driver(entries(), cleared(Menus(Screen.PLAYING)))
+        assert drive.menus.screen is Screen.CLEARED
+        assert drive.send(key(pygame.K_p), key(pygame.K_DOWN)).menus.screen is Screen.CLEARED
+        assert drive.send(confirm).menus.screen is Screen.PLAYING
 
 
 def test_a_whole_session_title_to_level_to_pause_to_title_to_quit() -> None:

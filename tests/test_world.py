@@ -321,3 +321,25 @@ def test_a_diagonal_move_into_an_inner_corner_ends_flush_against_both_faces() ->
     world.step(RIGHT)
     assert world.player.box.right == 6 * 16 and world.player.box.bottom == 3 * 16
     assert world.player.on_ground and world.max_penetration_px == 0.0
+
+
+def test_a_stomp_scores_its_points_and_each_finished_level_leaves_its_tally() -> None:
+    level = level_from_ascii([
+        "   P    ",
+        "        ",
+        "  C     ",
+        "   E   D",
+        "########",
+    ])
+    tuning = replace(INSTANT, enemy_speed_px_s=0.0, stomp_points=7)
+    campaign = Campaign(Path("x.tmx"), tuning, loader=lambda _: level)
+    while campaign.enemies_stomped == 0:
+        campaign.tick(NOTHING)
+        assert campaign.ticks < 120, "the drop never stomped the enemy"
+    assert campaign.score == 7 and campaign.coins_collected == 0
+    while campaign.outcome is Outcome.RUNNING:
+        campaign.tick(RIGHT)
+        assert campaign.ticks < 600, "the walk never reached the exit"
+    [result] = campaign.results
+    assert (result.coins, result.coins_total, result.stomps, result.enemies_total) == (0, 1, 1, 1)
+    assert result.ticks == campaign.ticks and result.score == campaign.score == 7

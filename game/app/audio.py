@@ -22,7 +22,7 @@ What it teaches:
 >>> audio.play("coins")
 Traceback (most recent call last):
     ...
-ValueError: no sound is called 'coins': use one of jump, coin, stomp, hurt, exit, menu
+ValueError: no sound is called 'coins': use one of jump, coin, stomp, hurt, exit, menu, tally
 """
 
 from __future__ import annotations
@@ -40,7 +40,8 @@ from game.sim.world import EventKind
 ASSETS = Path(__file__).resolve().parents[2] / "assets"
 SOUNDS = ASSETS / "sounds"
 
-EFFECT_NAMES = ("jump", "coin", "stomp", "hurt", "exit", "menu")  # <name>.wav in SOUNDS
+# <name>.wav in SOUNDS; "tally" plays when the level-end banner's tally is up
+EFFECT_NAMES = ("jump", "coin", "stomp", "hurt", "exit", "menu", "tally")
 MUSIC_FILE = "music.wav"
 SOUND_FOR_EVENT: dict[EventKind, str] = {  # events missing here make no sound
     EventKind.JUMP: "jump",

@@ -13,15 +13,19 @@ from game.app.debug_overlay import draw_debug
 from game.app.hud import draw_hud
 from game.app.render import draw_world
 from game.sim.campaign import Campaign
+from game.sim.world import World
 
 
 def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = None,
-                 frame: int = 0, fps: float = 0.0, update_ms: float = 0.0) -> pygame.Surface:
-    """Draw the current state of play on the display surface and return it."""
+                 frame: int = 0, fps: float = 0.0, update_ms: float = 0.0,
+                 world: World | None = None) -> pygame.Surface:
+    """Draw the current state of play on the display surface and return it: the campaign's
+    world, or ``world`` (a level just finished, still on screen under its banner)."""
     target = pygame.display.get_surface()
     assets = assets or load_assets()
-    draw_world(target, campaign.world, assets, frame or campaign.ticks)
+    world = world or campaign.world
+    draw_world(target, world, assets, frame or campaign.ticks)
     draw_hud(target, campaign, assets)
     if debug:
-        draw_debug(target, campaign.world, assets, fps, update_ms)
+        draw_debug(target, world, assets, fps, update_ms)
     return target

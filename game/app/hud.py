@@ -102,7 +102,8 @@ def _draw_hearts(target: pygame.Surface, assets: Assets, lives: int, start_lives
 
 
 def draw_hud(target: pygame.Surface, campaign: Campaign, assets: Assets) -> None:
-    """Draw the top bar: hearts for lives, coin icon and count, level title, score."""
+    """Draw the top bar: hearts for lives, the coins taken in this level of all it holds, the
+    level's title, and the score (coin values and stomps: not a second coin count)."""
     width = target.get_width()
     bar = pygame.Rect(0, 0, width, HUD_BAR_H_PX)
     translucent_rect(target, bar, HUD_BAR_COLOR)
@@ -114,7 +115,8 @@ def draw_hud(target: pygame.Surface, campaign: Campaign, assets: Assets) -> None
     coin = assets.coin_frames[0]
     coin_x = right + HUD_GAP_PX
     target.blit(coin, (coin_x, mid_y - coin.get_height() // 2))
-    coins = draw_text(target, assets.font, f"x{campaign.coins_collected}",
+    coins = draw_text(target, assets.font,
+                      f"{campaign.level_coins}/{len(campaign.world.level.coins)}",
                       (coin_x + coin.get_width() + ICON_GAP_PX, mid_y), GOLD, anchor="midleft")
 
     score = draw_text(target, assets.font, f"SCORE {campaign.score:0{SCORE_DIGITS}d}",

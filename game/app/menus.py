@@ -50,6 +50,7 @@ class Screen(Enum):
     LEVEL_SELECT = "level_select"
     PLAYING = "playing"
     PAUSED = "paused"
+    CLEARED = "cleared"  # the level-end banner (game.app.banner), between two levels
     ENDED = "ended"  # game over or won; the campaign's outcome says which
 
 
@@ -201,6 +202,11 @@ def ended(menus: Menus) -> Menus:
     return replace(menus, screen=Screen.ENDED)
 
 
+def cleared(menus: Menus) -> Menus:
+    """A level was finished: show its banner until it ends or is confirmed."""
+    return replace(menus, screen=Screen.CLEARED)
+
+
 def _step(item: int, nav: Nav, count: int) -> int:
     """Move a lit item up or down, wrapping round at either end."""
     if nav is Nav.UP:
@@ -262,10 +268,19 @@ def _paused(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
     return replace(menus, screen=Screen.PLAYING), None
 
 
+def _cleared(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
+             ) -> tuple[Menus, Command | None]:
+    if nav is Nav.CONFIRM:
+        return replace(menus, screen=Screen.PLAYING), None
+    return menus, None
+
+
 def _ended(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
            ) -> tuple[Menus, Command | None]:
+    """Back to the title with Play lit, whatever was lit when this run began: a second
+    Enter plays on (from the first level not yet finished)."""
     if nav in (Nav.CONFIRM, Nav.BACK):
-        return replace(menus, screen=Screen.TITLE), None
+        return replace(menus, screen=Screen.TITLE, title_item=TITLE_ITEMS.index(PLAY)), None
     return menus, None
 
 
@@ -275,6 +290,7 @@ _SCREENS: dict[Screen, Callable[[Menus, Nav, Sequence[LevelEntry]],
     Screen.LEVEL_SELECT: _level_select,
     Screen.PLAYING: _playing,
     Screen.PAUSED: _paused,
+    Screen.CLEARED: _cleared,
     Screen.ENDED: _ended,
 }
 

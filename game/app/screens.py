@@ -38,7 +38,8 @@ from game.app.hud import (
 )
 from game.app.menus import PAUSE_ITEMS, TITLE_ITEMS, LevelEntry, next_to_play
 from game.app.render import ANIMATION_HZ, animation_index
-from game.sim.campaign import Campaign
+from game.sim.campaign import Campaign, totals
+from game.sim.tuning import TICK_S
 
 GAME_TITLE = "Tile Hopper"
 LEVEL_SELECT_TITLE = "Level select"
@@ -104,7 +105,7 @@ def dim(target: pygame.Surface) -> None:
     target.fill(DIM_MULTIPLIER, special_flags=pygame.BLEND_RGB_MULT)
 
 
-def _panel(target: pygame.Surface, rect: pygame.Rect) -> None:
+def draw_panel(target: pygame.Surface, rect: pygame.Rect) -> None:
     translucent_rect(target, rect, PANEL_COLOR)
     pygame.draw.rect(target, PANEL_BORDER, rect, width=1)
 
@@ -190,7 +191,7 @@ def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int
     controls = _controls_panel(assets, top)
     menu.left = (target.get_width() - menu.w - PANEL_GAP_PX - controls.w) // 2
     controls.left = menu.right + PANEL_GAP_PX
-    _panel(target, menu)
+    draw_panel(target, menu)
     draw_menu(target, assets.font, TITLE_ITEMS, selected,
               (menu.left + PANEL_PAD_PX, menu.top + PANEL_PAD_PX), menu.w - 2 * PANEL_PAD_PX)
     hint = _title_hint(TITLE_ITEMS[selected], levels)
@@ -301,7 +302,7 @@ def draw_level_select(target: pygame.Surface, assets: Assets, frame: int,
                         small.get_linesize() + shown * row_h + 2 * PANEL_PAD_PX - LINE_GAP_PX)
     panel.w = min(panel.w, width - 2 * PANEL_PAD_PX)
     panel.centerx = width // 2
-    _panel(target, panel)
+    draw_panel(target, panel)
     inner_left, inner_right = panel.left + PANEL_PAD_PX, panel.right - PANEL_PAD_PX
     coins_right = inner_right - PANEL_PAD_PX
     time_right = coins_right - BEST_COINS_W_PX - COLUMN_GAP_PX
@@ -362,7 +363,7 @@ def draw_pause(target: pygame.Surface, assets: Assets, selected: int) -> None:
     panel = pygame.Rect(0, 0, menu_w + 2 * PANEL_PAD_PX,
                         heading_h + menu_h + LINE_GAP_PX + 2 * PANEL_PAD_PX)
     panel.center = target.get_rect().center
-    _panel(target, panel)
+    draw_panel(target, panel)
     draw_text(target, assets.big_font, "Paused", (panel.centerx, panel.top + PANEL_PAD_PX),
               anchor="midtop")
     draw_menu(target, font, PAUSE_ITEMS, selected,
@@ -389,7 +390,7 @@ def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign, hea
     panel = pygame.Rect(0, 0, panel_w,
                         heading_h + len(lines) * line_h + line_h + 3 * PANEL_PAD_PX)
     panel.center = (width // 2, height // 2)
-    _panel(target, panel)
+    draw_panel(target, panel)
     draw_text(target, assets.big_font, heading, (panel.centerx, panel.top + PANEL_PAD_PX),
               color, anchor="midtop")
     y = panel.top + PANEL_PAD_PX + heading_h
@@ -407,9 +408,52 @@ def draw_game_over(target: pygame.Surface, assets: Assets, campaign: Campaign) -
     _draw_result(target, assets, campaign, "Game Over", GAME_OVER_COLOR)
 
 
+WIN_HEADINGS = ("Level", "Time", "Coins", "Stomps")
+
+
+def win_rows(campaign: Campaign) -> list[tuple[str, str, str, str]]:
+    """The win screen's table: one row per level finished, then the campaign's total."""
+    rows = [(r.title, format_seconds(r.ticks * TICK_S), f"{r.coins}/{r.coins_total}",
+             f"{r.stomps}/{r.enemies_total}") for r in campaign.results]
+    ticks, coins, coins_total, stomps, _score = totals(campaign.results)
+    enemies = sum(r.enemies_total for r in campaign.results)
+    rows.append(("Total", format_seconds(ticks * TICK_S), f"{coins}/{coins_total}",
+                 f"{stomps}/{enemies}"))
+    return rows
+
+
 def draw_win(target: pygame.Surface, assets: Assets, campaign: Campaign) -> None:
-    """Dim the last frame and celebrate: the final score, coins and deaths."""
-    _draw_result(target, assets, campaign, "You Win!", WIN_COLOR)
+    """Dim the last frame and sum up the campaign: each level's time, coins and stomps, the
+    totals, the score and the deaths."""
+    dim(target)
+    font, big = assets.font, assets.big_font
+    rows = [WIN_HEADINGS, *win_rows(campaign)]
+    widths = [max(font.size(row[column])[0] for row in rows) for column in range(4)]
+    line_h = font.get_linesize() + LINE_GAP_PX
+    footer = f"Score {campaign.score}    Deaths {campaign.deaths}"
+    table_w = sum(widths) + 3 * COLUMN_GAP_PX
+    box = pygame.Rect(0, 0, max(table_w, big.size("You Win!")[0]) + 4 * PANEL_PAD_PX,
+                      big.get_linesize() + (len(rows) + 2) * line_h + 3 * PANEL_PAD_PX)
+    box.center = target.get_rect().center
+    draw_panel(target, box)
+    draw_text(target, big, "You Win!", (box.centerx, box.top + PANEL_PAD_PX), WIN_COLOR,
+              anchor="midtop")
+    y = box.top + PANEL_PAD_PX + big.get_linesize()
+    left = box.centerx - table_w // 2
+    for number, row in enumerate(rows):
+        color = GOLD if number in (0, len(rows) - 1) else TEXT_COLOR
+        x = left
+        for column, text in enumerate(row):
+            if column == 0:
+                draw_text(target, font, text, (x, y), DIM_TEXT if number else GOLD)
+            else:
+                draw_text(target, font, text, (x + widths[column], y), color,
+                          anchor="topright")
+            x += widths[column] + COLUMN_GAP_PX
+        y += line_h
+    draw_text(target, font, footer, (box.centerx, y), TEXT_COLOR, anchor="midtop")
+    draw_text(target, font, "Press Enter or A", (box.centerx, box.bottom - PANEL_PAD_PX),
+              GOLD, anchor="midbottom")
 
 
 def wrap_text(font: pygame.font.Font, text: str, max_w: int) -> list[str]:

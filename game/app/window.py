@@ -15,11 +15,13 @@ run ends at the end of the run, like a headless one.
 from __future__ import annotations
 
 import time
+from dataclasses import replace
 
 import pygame
 
 from game.app.assets import Assets, load_assets
 from game.app.audio import Audio
+from game.app.banner import Banner
 from game.app.frame import render_frame
 from game.app.gamepad import Gamepads, StickEdges, pad_in_use, pad_nav
 from game.app.menus import (
@@ -33,6 +35,7 @@ from game.app.menus import (
     Screen,
     StartLevel,
     campaign_levels,
+    cleared,
     ended,
     key_nav,
     level_entries,
@@ -86,6 +89,7 @@ def play_in_window(run: Run) -> int:
     using_pad = False  # the title shows the controls of the device last pressed
     levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks and bests read each frame
     attempt = Attempt()
+    banner: Banner | None = None
     while True:
         frame_s = clock.tick(TARGET_FPS) / 1000.0
         frame += 1
@@ -105,6 +109,8 @@ def play_in_window(run: Run) -> int:
                 if personal:
                     notice = settings_store.save(settings.to_json()) or notice
             elif (nav := _nav(event, stick_edges, menus.screen)) is not None:
+                if banner is not None and not banner.skippable():
+                    continue  # a jump held over the exit must not skip the tally unseen
                 before = menus
                 menus, command = press(menus, nav, entries)
                 if menus != before or command is not None:
@@ -142,6 +148,7 @@ def play_in_window(run: Run) -> int:
         if menus.screen is Screen.PLAYING:
             for _ in range(stepper.advance(frame_s)):
                 attempt.before_tick(run.campaign)
+                finishing = run.campaign.world
                 try:
                     events = run.tick(held_over.filter(held_keys(keys) | pads.held(buttons)))
                 except LevelError as error:  # the next level will not load: say so, go back
@@ -150,25 +157,45 @@ def play_in_window(run: Run) -> int:
                 for tick_event in events:
                     audio.play(tick_event.kind)
                 finish = attempt.after_tick(run.campaign, events)
-                if finish is not None and personal:
+                if finish is not None:
+                    banner = Banner(run.campaign.results[-1],
+                                    progress.best_ticks.get(finish.level), world=finishing)
                     progress.record(finish)
-                    notice = progress_store.save(progress.to_json()) or notice
-                if run.finished():
+                    if personal:
+                        notice = progress_store.save(progress.to_json()) or notice
+                if run.finished() or finish is not None:
                     break
-            if run.finished():
-                if scripted or run.args.ticks is not None:
-                    run.write_outputs(render_frame(run.campaign, debug=debug, assets=assets))
-                    return EXIT_OK
+            if run.finished() and (scripted or run.args.ticks is not None):
+                run.write_outputs(render_frame(run.campaign, debug=debug, assets=assets))
+                return EXIT_OK
+            if banner is not None:
+                menus = cleared(menus)
+            elif run.finished():
                 menus = ended(menus)
         else:
             stepper.advance(0.0)
+        # The level-end banner: a pause of the window only; the simulation waits for it.
+        if banner is not None:
+            if (sound := banner.advance(frame_s)) is not None:
+                audio.play(sound)
+            if banner.done() or menus.screen is not Screen.CLEARED:
+                banner = None
+                if menus.screen is Screen.CLEARED:
+                    menus = replace(menus, screen=Screen.PLAYING)
+                if run.finished():
+                    menus = ended(menus)
+                elif menus.screen is Screen.PLAYING:
+                    held_over.begin(held_keys(keys) | pads.held(buttons))
 
         # 3. Draw: the world, HUD and overlay (or a menu in their place), then any screen on
         # top, then a problem to report, if there is one.
         target = pygame.display.get_surface()
         if menus.screen not in MENU_SCREENS:
             render_frame(run.campaign, debug=debug, assets=assets, frame=frame,
-                         fps=clock.get_fps(), update_ms=run.last_update_ms)
+                         fps=clock.get_fps(), update_ms=run.last_update_ms,
+                         world=banner.world if banner is not None else None)
+        if banner is not None:
+            banner.draw(target, assets)
         _draw_screen(target, assets, menus, entries, run.campaign, frame, using_pad)
         if reload_error is not None:
             draw_error_banner(target, assets, RELOAD_FAILED + reload_error)

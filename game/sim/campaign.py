@@ -3,11 +3,16 @@
 Where it sits: above :class:`game.sim.world.World`. The world says what happened in a tick
 (coins, stomps, hurts, the exit); the campaign keeps the score and decides what follows:
 the next level (the map property ``next_level``), the win, or game over.
+
+The score: each coin adds its ``value``, each stomp adds ``Tuning.stomp_points``. Each finished
+level leaves a :class:`LevelResult` (its time, coins of its total, stomps) in
+``Campaign.results``, for the level-end banner and the win screen to show.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import dataclass
 from enum import Enum
 from pathlib import Path
 
@@ -25,6 +30,32 @@ class Outcome(Enum):
 
 
 LevelLoader = Callable[[Path], Level]
+
+
+@dataclass(frozen=True)
+class LevelResult:
+    """One level finished: how long it took in ticks, what was taken of what it held."""
+
+    path: Path
+    title: str
+    ticks: int
+    coins: int
+    coins_total: int
+    stomps: int
+    enemies_total: int
+    score: int  # points scored in this level
+
+
+def totals(results: list[LevelResult]) -> tuple[int, int, int, int, int]:
+    """Ticks, coins, coins on offer, stomps and score, summed over ``results``.
+
+    >>> one = LevelResult(Path("a.tmx"), "A", 600, 3, 5, 1, 2, 8)
+    >>> totals([one, one])
+    (1200, 6, 10, 2, 16)
+    """
+    return (sum(r.ticks for r in results), sum(r.coins for r in results),
+            sum(r.coins_total for r in results), sum(r.stomps for r in results),
+            sum(r.score for r in results))
 
 
 class Campaign:
@@ -45,6 +76,13 @@ class Campaign:
         self.levels_completed = 0
         self.max_penetration_px = 0.0
         self.last_events: list[Event] = []
+        self.results: list[LevelResult] = []  # one per level finished, in order
+        self._begin_level()
+
+    def _begin_level(self) -> None:
+        """Start counting the level now in ``self.world`` afresh."""
+        self.level_started_tick = self.ticks
+        self.level_coins = self.level_stomps = self.level_score = 0
 
     def tick(self, held: Actions) -> list[Event]:
         """Advance one tick; does nothing once the run has been won or lost."""
@@ -56,9 +94,12 @@ class Campaign:
         for event in events:
             if event.kind is EventKind.COIN:
                 self.coins_collected += 1
-                self.score += event.value
+                self.level_coins += 1
+                self._add_points(event.value)
             elif event.kind is EventKind.STOMP:
                 self.enemies_stomped += 1
+                self.level_stomps += 1
+                self._add_points(self.tuning.stomp_points)
             elif event.kind is EventKind.HURT:
                 self.deaths += 1
                 self.lives -= 1
@@ -69,13 +110,22 @@ class Campaign:
         self.last_events = events
         return events
 
+    def _add_points(self, points: int) -> None:
+        self.score += points
+        self.level_score += points
+
     def _complete_level(self) -> None:
         self.levels_completed += 1
-        next_level = self.world.level.next_level
+        level = self.world.level
+        self.results.append(LevelResult(
+            level.path, level.title, self.ticks - self.level_started_tick, self.level_coins,
+            len(level.coins), self.level_stomps, len(level.enemies), self.level_score))
+        next_level = level.next_level
         if next_level is None:
             self.outcome = Outcome.WON
         else:
             self.world = World(self.loader(next_level), self.tuning)
+            self._begin_level()
 
     def reload(self, level: Level) -> None:
         """Swap in a new version of the current level (``--watch``), keeping the run going.
@@ -95,3 +145,4 @@ class Campaign:
     def restart_level(self) -> None:
         """Start the current level again from its spawn (the pause menu's Restart)."""
         self.world = World(self.world.level, self.tuning)
+        self._begin_level()

@@ -52,6 +52,7 @@ class Tuning:
     enemy_width_px: int = 14
     enemy_height_px: int = 12
     start_lives: int = 3
+    stomp_points: int = 5                  # score for each enemy stomped (a coin: its value)
     tick_s: float = TICK_S
 
     @property

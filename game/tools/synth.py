@@ -208,6 +208,7 @@ BRASS = Instrument(Wave.SQUARE, volume=0.3, release_s=0.015, sustain=0.8)
 FANFARE_NOTES = (("C5", 0.09), ("E5", 0.09), ("G5", 0.09), ("C6", 0.4))  # (note, seconds)
 FANFARE_BASS = Tone(Instrument(Wave.TRIANGLE, volume=0.4, release_s=0.1, sustain=0.5),
                     note_hz("C4"), note_hz("C4"), duration_s=0.4)
+TALLY_NOTES = (("G5", 0.05), ("A5", 0.05), ("B5", 0.05), ("D6", 0.05), ("G6", 0.35))
 MENU = Tone(Instrument(Wave.SQUARE, volume=0.25, attack_s=0.001, release_s=0.01, sustain=0.3),
             start_hz=1800.0, end_hz=1200.0, duration_s=0.03)
 
@@ -247,6 +248,13 @@ def fanfare(rng: random.Random) -> Samples:
     melody = in_sequence(rng, [steady(BRASS, note, s) for note, s in FANFARE_NOTES])
     bass = render(FANFARE_BASS, rng)
     return mix(len(melody), [(0, melody), (len(melody) - len(bass), bass)])
+
+
+def tally(rng: random.Random) -> Samples:
+    """The level-end tally: a quick climb of chimes, one a line, landing on a ringing G."""
+    *climb, (last, last_s) = TALLY_NOTES
+    return in_sequence(rng, [*(steady(CHIME, note, s) for note, s in climb),
+                             steady(CHIME_RING, last, last_s)])
 
 
 def menu(rng: random.Random) -> Samples:
@@ -376,6 +384,7 @@ Generator = Callable[[random.Random], Samples]
 
 EFFECTS: dict[str, Generator] = {
     "jump": jump, "coin": coin, "stomp": stomp, "hurt": hurt, "exit": fanfare, "menu": menu,
+    "tally": tally,
 }
 MUSIC_FILE = "music.wav"
 ASSET_MODE = 0o644  # owner reads and writes, everyone reads
