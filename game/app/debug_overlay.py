@@ -26,6 +26,7 @@ import pygame
 
 from game.app.assets import Assets
 from game.app.hud import HUD_BAR_H_PX, SMALL_TEXT_ANTIALIAS, Color, draw_text
+from game.app.render import screen_offset
 from game.collision.aabb import Box
 from game.collision.contacts import Change, ContactEvent
 from game.sim.camera import Camera
@@ -64,8 +65,9 @@ CONTACT_LINES = 3  # the last few contact starts and ends, from the world's trac
 
 
 def _screen_rect(box: Box, camera: Camera) -> pygame.Rect:
-    """The box through the camera, floored like every other drawn thing."""
-    return box.moved(-camera.x, -camera.y).to_rect()
+    """The box's whole pixels through the camera, as the tiles and sprites are drawn."""
+    dx, dy = screen_offset(camera)
+    return box.to_rect().move(-dx, -dy)
 
 
 def _near_cells(grid: TileGrid, boxes: list[Box]) -> set[tuple[int, int]]:
@@ -106,12 +108,14 @@ def _draw_sweep(wash: pygame.Surface, move: Move | None, color: Color,
         return None
     box = move.box
     if hit.side in (Side.LEFT, Side.RIGHT):
-        left = math.floor(hit.face - camera.x) - HIT_MARK_PX // 2
-        top = math.floor(box.top - camera.y)
+        dx, dy = screen_offset(camera)
+        left = math.floor(hit.face) - dx - HIT_MARK_PX // 2
+        top = math.floor(box.top) - dy
         bar = pygame.Rect(left, top, HIT_MARK_PX, math.ceil(box.h))
     else:
-        left = math.floor(box.left - camera.x)
-        top = math.floor(hit.face - camera.y) - HIT_MARK_PX // 2
+        dx, dy = screen_offset(camera)
+        left = math.floor(box.left) - dx
+        top = math.floor(hit.face) - dy - HIT_MARK_PX // 2
         bar = pygame.Rect(left, top, math.ceil(box.w), HIT_MARK_PX)
     return bar
 

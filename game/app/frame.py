@@ -11,20 +11,26 @@ import pygame
 from game.app.assets import Assets, load_assets
 from game.app.debug_overlay import draw_debug
 from game.app.hud import draw_hud
-from game.app.render import draw_world
+from game.app.render import WorldRenderer
 from game.sim.campaign import Campaign
 from game.sim.world import World
 
 
 def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = None,
-                 frame: int = 0, fps: float = 0.0, update_ms: float = 0.0,
-                 world: World | None = None) -> pygame.Surface:
+                 renderer: WorldRenderer | None = None, frame: int = 0, fps: float = 0.0,
+                 update_ms: float = 0.0, world: World | None = None) -> pygame.Surface:
     """Draw the current state of play on the display surface and return it: the campaign's
-    world, or ``world`` (a level just finished, still on screen under its banner)."""
+    world, or ``world`` (a level just finished, still on screen under its banner).
+
+    A window passes the same ``renderer`` every frame, so its caches last; without one, a
+    renderer is made for this frame alone (a screenshot).
+    """
     target = pygame.display.get_surface()
-    assets = assets or load_assets()
+    if renderer is None:
+        renderer = WorldRenderer(assets or load_assets())
+    assets = renderer.assets
     world = world or campaign.world
-    draw_world(target, world, assets, frame or campaign.ticks)
+    renderer.draw(target, world, frame or campaign.ticks)
     draw_hud(target, campaign, assets)
     if debug:
         draw_debug(target, world, assets, fps, update_ms)

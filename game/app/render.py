@@ -1,60 +1,63 @@
-"""Draw one frame of the world: sky, tile layers, exits, coins, enemies, the player, foreground.
+"""Draw the world: the sky, the cached tile layers, then every sprite through the camera.
 
-Where it sits: after the frame's ticks, before the HUD. :func:`draw_world` paints the
-320x180 logical screen from what :meth:`game.sim.world.World.step` left behind; it only *reads*
-the world (positions, velocities, facing) and never moves, adds or removes anything.
+Where it sits: after the frame's ticks, before the HUD. A :class:`WorldRenderer` paints the
+320x180 logical screen from what :meth:`game.sim.world.World.step` left behind; it only
+*reads* the world's positions and state, and what it changes on a sprite is its picture.
+
+A frame, in order (:meth:`WorldRenderer.draw`):
+
+1. **Sky**: the level's colour, then the sky picture, scrolled by parallax.
+2. **Tile layers behind the sprites**, each from its cache of pre-drawn chunks.
+3. **Sprites**: every sprite's ``update(frame)`` picks its picture, then one
+   :class:`CameraGroup` blits each ``image`` at its ``rect`` minus the camera, in the
+   layer order of :class:`Layer` (platforms, flags, coins, enemies, squashed, player).
+4. **Foreground tile layers**, cached the same way, so the player walks *behind* a bush.
 
 What it teaches:
-  * **World space to screen space** is one subtraction: ``screen = floor(world - camera)``.
-    ``math.floor``, never ``int()``: ``int(-0.5)`` is 0, which would make everything left or
-    above the camera jump a pixel as it crosses zero.
-  * **Draw only what is in view.** The visible columns and rows are found by dividing the
-    camera's edges by the tile size (the same trick :mod:`game.sim.tilegrid` uses for collisions),
-    so a map a hundred screens wide costs the same per frame as one screen.
-  * **Painter's order** gives depth: far things first, then the level, the sprites, and
-    the foreground layers last so the player can walk *behind* a bush.
+  * **World space to screen space** is one subtraction. The camera's position is floored
+    once per frame (:func:`screen_offset`) and every tile and sprite is drawn at its whole
+    pixel minus that, so nothing shimmers against the tiles it stands on. ``math.floor``,
+    never ``int()``: ``int(-0.5)`` is 0, which would make everything left of or above the
+    camera jump a pixel as it crosses zero.
+  * **The Group draws; the sprites say what.** There is no per-kind drawing code here: a
+    sprite's ``image`` and ``rect`` are exactly what appears, so the picture, the rect and
+    the physics box cannot disagree (:mod:`game.sim.sprite`). The renderer only hands each
+    new sprite its pictures once (:meth:`WorldRenderer.strip_for`).
+  * **Draw static things once.** A tile layer never changes in play, so it is drawn into
+    chunks of :data:`CHUNK_PX` pixels square the first time they come into view, and each
+    frame blits the two to six chunks the camera sees instead of up to 252 tiles one by one.
+    Chunks, not one picture of the whole map, so a huge map costs memory only where the
+    camera has been, and at most :data:`MAX_CACHED_CHUNKS` of them are kept.
   * **Parallax**: the sky scrolls at a fraction of the camera's speed, so it looks far away;
     it repeats horizontally, so it never runs out.
-  * **Sprites are anchored bottom-centre on the hitbox.** The art is bigger than the box
-    (hair, ears), but the feet must sit exactly on the floor the physics stands on.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Mapping, Sequence
+from collections import OrderedDict
+from collections.abc import Iterable, Mapping
+from enum import IntEnum
+from typing import TYPE_CHECKING
 
 import pygame
 
 from game.app.assets import Assets
-from game.collision.aabb import Box
 from game.sim.camera import Camera
-from game.sim.enemy import Enemy, EnemyKind
-from game.sim.level import TileLayer
+from game.sim.enemy import Enemy, Squashed
+from game.sim.level import Level, TileLayer
+from game.sim.pickups import Checkpoint, Coin, Exit
+from game.sim.platforms import Platform
 from game.sim.player import Player
+from game.sim.sprite import BoxSprite, Strip
 from game.sim.world import World
-
-ANIMATION_HZ = 60  # ``frame`` advances this many times per second (one per tick or frame)
 
 SKY_PARALLAX = 0.25  # the sky moves this fraction of a pixel per pixel the camera moves
 DEFAULT_SKY_COLOR = (110, 170, 240)  # behind the sky picture, if a level does not set one
 
-COIN_FPS = 8  # spin frames per second
-COIN_PHASE_PER_COL = 1  # neighbouring coins (by 16 px column) are one spin frame apart
-COIN_PHASE_COL_PX = 16
+CHUNK_PX = 256  # a cached piece of a tile layer is this many pixels square
+MAX_CACHED_CHUNKS = 96  # at 256 KiB a chunk, at most 24 MiB of cached tiles
 
-ENEMY_WALK_FPS = 4
-ENEMY_WALK_FRAMES = (0, 1)
-SQUASHED_FRAME = 2
-HOPPER_SITTING_FRAME = 3
-HOPPER_AIRBORNE_FRAME = 4
-
-PLAYER_IDLE_FPS = 2
-PLAYER_IDLE_FRAMES = (0, 1)
-PLAYER_RUN_FPS = 12
-PLAYER_RUN_FRAMES = (2, 3, 4, 5)
-PLAYER_JUMP_FRAME = 6  # rising
-PLAYER_FALL_FRAME = 7
 PLANK_COLOR = (150, 98, 52)
 PLANK_TOP_COLOR = (204, 150, 84)
 PLANK_EDGE_COLOR = (62, 36, 20)
@@ -62,29 +65,29 @@ PLANK_TOP_PX = 2
 PLANK_BOLT_INSET_PX = 3
 PLANK_BOLT_GAP_PX = 8
 UNREACHED_TINT = (120, 120, 140)  # a checkpoint flag not yet touched is drawn greyed
-BLINK_HZ = 10  # while invulnerable after a hit, the player flickers at this rate
 
 OPAQUE = 255  # surface alpha of a fully opaque layer
 ARGB_HEX_DIGITS = 8  # Tiled writes "#aarrggbb" when the background colour has alpha
 
 
-def to_screen(x: float, y: float, camera: Camera) -> tuple[int, int]:
-    """World pixel to screen pixel: ``floor(world - camera)`` on each axis.
+class Layer(IntEnum):
+    """The order sprites are drawn in, back to front."""
 
-    >>> to_screen(10.0, 5.5, Camera(x=3.5, y=6.0))
-    (6, -1)
+    PLATFORMS = 0
+    FLAGS = 1  # checkpoints and exits
+    COINS = 2
+    ENEMIES = 3
+    SQUASHED = 4
+    PLAYER = 5
+
+
+def screen_offset(camera: Camera) -> tuple[int, int]:
+    """What to subtract from a whole map pixel to get its screen pixel, for this frame.
+
+    >>> screen_offset(Camera(x=3.5, y=-6.25))
+    (3, -7)
     """
-    return math.floor(x - camera.x), math.floor(y - camera.y)
-
-
-def animation_index(frame: int, fps: int, frames: Sequence[int], phase: int = 0) -> int:
-    """The sprite frame to show at ``frame`` for a loop of ``frames`` played at ``fps``.
-
-    >>> [animation_index(f, 8, (2, 3, 4, 5)) for f in (0, 7, 8, 15, 23, 30)]
-    [2, 2, 3, 4, 5, 2]
-    """
-    step = frame * fps // ANIMATION_HZ + phase
-    return frames[step % len(frames)]
+    return math.floor(camera.x), math.floor(camera.y)
 
 
 def parse_tiled_color(text: str | None) -> pygame.Color | None:
@@ -108,24 +111,55 @@ def parse_tiled_color(text: str | None) -> pygame.Color | None:
         return None
 
 
-def _draw_sky(target: pygame.Surface, world: World, assets: Assets) -> None:
-    color = parse_tiled_color(world.level.background_color)
-    target.fill(color if color is not None else DEFAULT_SKY_COLOR)
-    sky = assets.background
-    sky_w = sky.get_width()
-    scroll = math.floor(world.camera.x * SKY_PARALLAX)
-    x = -(scroll % sky_w)
-    while x < target.get_width():
-        target.blit(sky, (x, 0))
-        x += sky_w
+if TYPE_CHECKING:
+    _LayeredSprites = pygame.sprite.LayeredUpdates[BoxSprite]
+else:  # pygame's groups are generic only to the type checker
+    _LayeredSprites = pygame.sprite.LayeredUpdates
 
 
-def _visible_range(view_lo: float, view_len: int, cell: int, count: int,
+class CameraGroup(_LayeredSprites):
+    """A layered group that draws through a camera: each ``image`` at ``rect`` minus it."""
+
+    def draw_through(self, target: pygame.Surface, offset: tuple[int, int]) -> None:
+        """Blit every sprite, back layer first, at its ``rect`` moved by ``-offset``."""
+        dx, dy = offset
+        target.blits([(sprite.image, sprite.rect.move(-dx, -dy)) for sprite in self.sprites()],
+                     doreturn=False)
+
+
+def plank(size: tuple[int, int]) -> pygame.Surface:
+    """A bolted wooden plank of exactly ``size``: a moving platform's picture."""
+    image = pygame.Surface(size)
+    rect = image.get_rect()
+    image.fill(PLANK_COLOR)
+    image.fill(PLANK_TOP_COLOR, (0, 0, rect.w, PLANK_TOP_PX))
+    pygame.draw.rect(image, PLANK_EDGE_COLOR, rect, width=1)
+    for bolt_x in range(PLANK_BOLT_INSET_PX, rect.right - 1, PLANK_BOLT_GAP_PX):
+        image.set_at((bolt_x, rect.centery), PLANK_EDGE_COLOR)
+    return image
+
+
+def greyed(image: pygame.Surface) -> pygame.Surface:
+    """A copy of ``image`` multiplied by :data:`UNREACHED_TINT`."""
+    copy = image.copy()
+    copy.fill(UNREACHED_TINT, special_flags=pygame.BLEND_RGB_MULT)
+    return copy
+
+
+def _visible_range(lo_px: float, hi_px: float, cell: int, count: int,
                    extra_before: int, extra_after: int) -> range:
-    """Indices of the cells of size ``cell`` overlapping ``[view_lo, view_lo + view_len)``,
-    widened by ``extra`` cells each side (for images larger than their cell), in the map."""
-    first = math.floor(view_lo / cell) - extra_before
-    last = math.floor((view_lo + view_len) / cell) + extra_after
+    """Indices of the cells of size ``cell`` overlapping ``[lo_px, hi_px)``, widened by
+    ``extra`` cells each side (for images larger than their cell), within ``count``.
+
+    >>> _visible_range(20.0, 52.0, 16, 10, 0, 0)
+    range(1, 4)
+    >>> _visible_range(-40.0, -1.0, 16, 10, 0, 0)     # above the map: nothing
+    range(0, 0)
+    >>> _visible_range(-40.0, -1.0, 16, 10, 0, 1)     # unless row 0's pictures reach up
+    range(0, 1)
+    """
+    first = math.floor(lo_px / cell) - extra_before
+    last = math.ceil(hi_px / cell) - 1 + extra_after
     return range(max(0, first), min(count - 1, last) + 1)
 
 
@@ -137,115 +171,181 @@ def _overhang_cells(images: Iterable[pygame.Surface], tile_w: int, tile_h: int
     return max(0, math.ceil(max_w / tile_w) - 1), max(0, math.ceil(max_h / tile_h) - 1)
 
 
-def _draw_layer(target: pygame.Surface, layer: TileLayer, images: Mapping[int, pygame.Surface],
-                world: World, overhang: tuple[int, int]) -> None:
-    """Blit the visible tiles of one layer. Tiles larger than a cell are anchored at the
-    cell's bottom-left corner, as Tiled draws them."""
-    if layer.opacity <= 0 or not layer.gids:
-        return
-    grid, camera = world.grid, world.camera
-    tile_w, tile_h = grid.tile_w, grid.tile_h
-    off_x, off_y = layer.offset
-    view_w, view_h = target.get_size()
-    reach_right, reach_up = overhang
-    rows = _visible_range(camera.y - off_y, view_h, tile_h, len(layer.gids), 0, reach_up)
-    cols = _visible_range(camera.x - off_x, view_w, tile_w, len(layer.gids[0]), reach_right, 0)
+class LayerCache:
+    """One tile layer, drawn chunk by chunk into surfaces the first time each is seen.
 
-    canvas = target
-    if layer.opacity < 1:
-        canvas = pygame.Surface(target.get_size(), pygame.SRCALPHA)
-    blits: list[tuple[pygame.Surface, tuple[int, int]]] = []
-    for row in rows:
-        gids = layer.gids[row]
-        bottom = (row + 1) * tile_h + off_y
-        for col in cols:
-            gid = gids[col] if col < len(gids) else 0
-            image = images.get(gid) if gid else None
-            if image is None:
-                continue
-            blits.append((image, to_screen(col * tile_w + off_x, bottom - image.get_height(),
-                                           camera)))
-    canvas.blits(blits, doreturn=False)
-    if canvas is not target:
-        canvas.set_alpha(round(layer.opacity * OPAQUE))
-        target.blit(canvas, (0, 0))
+    Tiles larger than a cell are anchored at the cell's bottom-left corner, as Tiled draws
+    them, so a chunk also draws the neighbours whose pictures reach into it.
+    """
+
+    def __init__(self, layer: TileLayer, images: Mapping[int, pygame.Surface],
+                 tile_size: tuple[int, int], overhang: tuple[int, int]) -> None:
+        self.layer = layer
+        self.images = images
+        self.tile_w, self.tile_h = tile_size
+        self.overhang = overhang
+        self.chunks: OrderedDict[tuple[int, int], pygame.Surface | None] = OrderedDict()
+        self.chunks_drawn = 0  # how many chunks have been drawn from tiles, ever
+
+    def chunk(self, cx: int, cy: int) -> pygame.Surface | None:
+        """Chunk ``(cx, cy)``, drawing it now if it is not cached; None if it is empty."""
+        key = (cx, cy)
+        if key in self.chunks:
+            self.chunks.move_to_end(key)
+            return self.chunks[key]
+        surface = self._draw_chunk(cx, cy)
+        self.chunks[key] = surface
+        if len(self.chunks) > MAX_CACHED_CHUNKS:
+            self.chunks.popitem(last=False)  # forget the one seen longest ago
+        return surface
+
+    def _draw_chunk(self, cx: int, cy: int) -> pygame.Surface | None:
+        gids = self.layer.gids
+        left, top = cx * CHUNK_PX, cy * CHUNK_PX
+        reach_right, reach_up = self.overhang
+        rows = _visible_range(top, top + CHUNK_PX, self.tile_h, len(gids), 0, reach_up)
+        cols = _visible_range(left, left + CHUNK_PX, self.tile_w, len(gids[0]), reach_right, 0)
+        blits: list[tuple[pygame.Surface, tuple[int, int]]] = []
+        for row in rows:
+            line = gids[row]
+            bottom = (row + 1) * self.tile_h - top
+            for col in cols:
+                gid = line[col] if col < len(line) else 0
+                image = self.images.get(gid) if gid else None
+                if image is not None:
+                    blits.append((image, (col * self.tile_w - left,
+                                          bottom - image.get_height())))
+        if not blits:
+            return None
+        surface = pygame.Surface((CHUNK_PX, CHUNK_PX), pygame.SRCALPHA)
+        surface.blits(blits, doreturn=False)
+        # Run-length encoded, a chunk's empty stretches are skipped rather than blended.
+        surface.set_alpha(round(self.layer.opacity * OPAQUE), pygame.RLEACCEL)
+        self.chunks_drawn += 1
+        return surface
+
+    def draw(self, target: pygame.Surface, offset: tuple[int, int]) -> None:
+        """Blit the chunks in view; ``offset`` is :func:`screen_offset` of the camera."""
+        if self.layer.opacity <= 0 or not self.layer.gids:
+            return
+        layer_x = math.floor(self.layer.offset[0])
+        layer_y = math.floor(self.layer.offset[1])
+        view_x, view_y = offset[0] - layer_x, offset[1] - layer_y  # the view, in layer pixels
+        view_w, view_h = target.get_size()
+        for cy in range(view_y // CHUNK_PX, (view_y + view_h - 1) // CHUNK_PX + 1):
+            for cx in range(view_x // CHUNK_PX, (view_x + view_w - 1) // CHUNK_PX + 1):
+                surface = self.chunk(cx, cy)
+                if surface is not None:
+                    target.blit(surface, (cx * CHUNK_PX - view_x, cy * CHUNK_PX - view_y))
 
 
-def _blit_anchored(target: pygame.Surface, image: pygame.Surface, box: Box, camera: Camera,
-                   *, flip: bool = False, centre_y: bool = False) -> None:
-    """Draw ``image`` centred on the box horizontally, its bottom on the box's bottom (or
-    centred vertically), mirrored if ``flip``."""
-    if flip:
-        image = pygame.transform.flip(image, True, False)
-    w, h = image.get_size()
-    top = box.y + (box.h - h) / 2 if centre_y else box.bottom - h
-    target.blit(image, to_screen(box.x + (box.w - w) / 2, top, camera))
+def layer_caches(level: Level, layers: Iterable[TileLayer]) -> list[LayerCache]:
+    """A cache for each of ``layers`` of ``level``."""
+    grid = level.grid
+    images = level.tile_images
+    overhang = _overhang_cells(images.values(), grid.tile_w, grid.tile_h)
+    return [LayerCache(layer, images, (grid.tile_w, grid.tile_h), overhang) for layer in layers]
 
 
-def player_frame(player: Player, frame: int) -> int:
-    """Which strip frame shows the player: jump or fall in the air, run or idle on the ground."""
-    if not player.on_ground:
-        return PLAYER_JUMP_FRAME if player.vy < 0 else PLAYER_FALL_FRAME
-    if player.vx != 0:
-        return animation_index(frame, PLAYER_RUN_FPS, PLAYER_RUN_FRAMES)
-    return animation_index(frame, PLAYER_IDLE_FPS, PLAYER_IDLE_FRAMES)
+def cast(world: World) -> tuple[tuple[Layer, Iterable[BoxSprite]], ...]:
+    """Every group of the world's sprites that is drawn, with the layer it is drawn in."""
+    return ((Layer.PLATFORMS, world.platforms), (Layer.FLAGS, world.checkpoints),
+            (Layer.FLAGS, world.exits), (Layer.COINS, world.coins),
+            (Layer.ENEMIES, world.enemies), (Layer.SQUASHED, world.squashed),
+            (Layer.PLAYER, world.players))
 
 
-def _draw_platform(target: pygame.Surface, box: Box, camera: Camera) -> None:
-    """A bolted wooden plank filling the platform's box exactly (its hitbox is its look)."""
-    rect = box.moved(-camera.x, -camera.y).to_rect()
-    pygame.draw.rect(target, PLANK_COLOR, rect)
-    pygame.draw.rect(target, PLANK_TOP_COLOR, (rect.x, rect.y, rect.w, PLANK_TOP_PX))
-    pygame.draw.rect(target, PLANK_EDGE_COLOR, rect, width=1)
-    for bolt_x in range(rect.x + PLANK_BOLT_INSET_PX, rect.right - 1, PLANK_BOLT_GAP_PX):
-        target.set_at((bolt_x, rect.centery), PLANK_EDGE_COLOR)
+class WorldRenderer:
+    """Draws worlds with ``assets``; keeps the sprites' group and the tile caches of the
+    world it last drew, so a window should keep one renderer for the whole run."""
 
+    def __init__(self, assets: Assets) -> None:
+        self.assets = assets
+        self.player_strip = Strip.of(assets.player_frames)
+        self.enemy_strip = Strip.of(assets.enemy_frames)
+        self.coin_strip = Strip.of(assets.coin_frames)
+        self.exit_strip = Strip.of([assets.exit_image])
+        self.checkpoint_strip = Strip.of([greyed(assets.exit_image), assets.exit_image])
+        self.plank_strips: dict[tuple[int, int], Strip] = {}
+        sky = assets.background  # an opaque sky hides the level's colour: no need to fill
+        opaque_px = pygame.mask.from_surface(sky, OPAQUE - 1).count()
+        self.sky_covers = opaque_px == sky.get_width() * sky.get_height()
+        self.world: World | None = None
+        self.sprites = CameraGroup()
+        self.back: list[LayerCache] = []
+        self.front: list[LayerCache] = []
 
-def _draw_sprites(target: pygame.Surface, world: World, assets: Assets, frame: int) -> None:
-    camera = world.camera
-    for platform in world.platforms:
-        _draw_platform(target, platform.box, camera)
-    for number, flag in enumerate(world.checkpoints):
-        image = assets.exit_image
-        if number != world.checkpoint_reached:
-            image = image.copy()
-            image.fill(UNREACHED_TINT, special_flags=pygame.BLEND_RGB_MULT)
-        _blit_anchored(target, image, flag.box, camera)
-    for goal in world.exits:
-        _blit_anchored(target, assets.exit_image, goal.box, camera)
-    for coin in world.coins:
-        phase = math.floor(coin.box.x / COIN_PHASE_COL_PX) * COIN_PHASE_PER_COL
-        index = animation_index(frame, COIN_FPS, range(len(assets.coin_frames)), phase)
-        _blit_anchored(target, assets.coin_frames[index], coin.box, camera, centre_y=True)
-    enemy: Enemy
-    for number, enemy in enumerate(world.enemies):
-        if enemy.kind is EnemyKind.HOPPER:
-            index = HOPPER_SITTING_FRAME if enemy.on_ground else HOPPER_AIRBORNE_FRAME
-        else:
-            index = animation_index(frame, ENEMY_WALK_FPS, ENEMY_WALK_FRAMES, number)
-        _blit_anchored(target, assets.enemy_frames[index], enemy.box, camera,
-                       flip=enemy.direction < 0)
-    for squash in world.squashed:
-        _blit_anchored(target, assets.enemy_frames[SQUASHED_FRAME], squash.box, camera)
-    player = world.player
-    blink_off = player.invulnerable and (frame * 2 * BLINK_HZ // ANIMATION_HZ) % 2 == 1
-    if not blink_off:
-        _blit_anchored(target, assets.player_frames[player_frame(player, frame)], player.box,
-                       camera, flip=player.facing < 0)
+    def draw(self, target: pygame.Surface, world: World, frame: int) -> None:
+        """Paint the world view onto ``target`` (the 320x180 logical screen).
+
+        ``frame`` drives the animations at :data:`game.sim.sprite.ANIMATION_HZ` steps a second.
+        """
+        if world is not self.world:
+            self._begin(world)
+        offset = screen_offset(world.camera)
+        # 1. Sky.
+        self._draw_sky(target, world)
+        # 2. Tile layers behind the sprites.
+        for cache in self.back:
+            cache.draw(target, offset)
+        # 3. Sprites: new ones get their pictures, each picks its frame, the group draws.
+        self._cast_new_sprites(world)
+        self.sprites.update(frame)
+        self.sprites.draw_through(target, offset)
+        # 4. Foreground tile layers.
+        for cache in self.front:
+            cache.draw(target, offset)
+
+    def _begin(self, world: World) -> None:
+        """A new world (a level started, restarted or reloaded): fresh group and caches."""
+        self.world = world
+        self.sprites = CameraGroup()
+        self.back = layer_caches(world.level, world.level.layers)
+        self.front = layer_caches(world.level, world.level.foreground)
+
+    def _cast_new_sprites(self, world: World) -> None:
+        """Add the world's sprites the group does not hold yet (all at first, then a squashed
+        enemy now and then). A sprite that leaves play is ``kill()``-ed by the world, which
+        takes it out of this group too."""
+        for layer, members in cast(world):
+            for sprite in members:
+                if not self.sprites.has(sprite):
+                    sprite.dress(self.strip_for(sprite))
+                    self.sprites.add(sprite, layer=layer)
+
+    def strip_for(self, sprite: BoxSprite) -> Strip:
+        """The pictures a sprite wears (chosen once per sprite, never per frame)."""
+        if isinstance(sprite, Player):
+            return self.player_strip
+        if isinstance(sprite, Enemy | Squashed):
+            return self.enemy_strip
+        if isinstance(sprite, Coin):
+            return self.coin_strip
+        if isinstance(sprite, Checkpoint):
+            return self.checkpoint_strip
+        if isinstance(sprite, Exit):
+            return self.exit_strip
+        if isinstance(sprite, Platform):
+            size = (max(1, math.ceil(sprite.box.w)), max(1, math.ceil(sprite.box.h)))
+            if size not in self.plank_strips:
+                self.plank_strips[size] = Strip.of([plank(size)])
+            return self.plank_strips[size]
+        raise TypeError(f"no pictures for a {type(sprite).__name__}")
+
+    def _draw_sky(self, target: pygame.Surface, world: World) -> None:
+        sky = self.assets.background
+        if not self.sky_covers or sky.get_height() < target.get_height():
+            color = parse_tiled_color(world.level.background_color)
+            target.fill(color if color is not None else DEFAULT_SKY_COLOR)
+        sky_w = sky.get_width()
+        scroll = math.floor(world.camera.x * SKY_PARALLAX)
+        x = -(scroll % sky_w)
+        while x < target.get_width():
+            target.blit(sky, (x, 0))
+            x += sky_w
 
 
 def draw_world(target: pygame.Surface, world: World, assets: Assets, frame: int) -> None:
-    """Paint the whole world view onto ``target`` (the 320x180 logical screen).
-
-    ``frame`` drives the animations at :data:`ANIMATION_HZ` steps per second; pass the
-    campaign's tick count so animations freeze while the game is paused.
-    """
-    _draw_sky(target, world, assets)
-    level = world.level
-    images = level.tile_images
-    overhang = _overhang_cells(images.values(), world.grid.tile_w, world.grid.tile_h)
-    for layer in level.layers:
-        _draw_layer(target, layer, images, world, overhang)
-    _draw_sprites(target, world, assets, frame)
-    for layer in level.foreground:
-        _draw_layer(target, layer, images, world, overhang)
+    """Draw one picture of ``world`` with a renderer made for it (no cache survives the call:
+    for a picture now and then; a window keeps one :class:`WorldRenderer`)."""
+    WorldRenderer(assets).draw(target, world, frame)

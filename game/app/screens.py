@@ -37,8 +37,8 @@ from game.app.hud import (
     translucent_rect,
 )
 from game.app.menus import PAUSE_ITEMS, TITLE_ITEMS, LevelEntry, next_to_play
-from game.app.render import ANIMATION_HZ, animation_index
 from game.sim.campaign import Campaign, totals
+from game.sim.sprite import ANIMATION_HZ, animation_index
 from game.sim.tuning import TICK_S
 
 GAME_TITLE = "Tile Hopper"
@@ -159,7 +159,7 @@ def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int
                levels: Sequence[LevelEntry], *, pad: bool = False) -> None:
     """The title screen: drifting sky, the game's name, the menu, how to play, a running hero.
 
-    ``frame`` counts at :data:`game.app.render.ANIMATION_HZ` per second and drives the motion;
+    ``frame`` counts at :data:`game.sim.sprite.ANIMATION_HZ` per second and drives the motion;
     ``TITLE_ITEMS[selected]`` is lit, and a line under the menu says what it leads to. The
     controls shown are the gamepad's if ``pad`` (the last thing pressed was on a pad), else
     the keyboard's.

@@ -41,6 +41,7 @@ from game.app.menus import (
     level_entries,
     press,
 )
+from game.app.render import WorldRenderer
 from game.app.run import EXIT_OK, TARGET_FPS, Run, held_keys
 from game.app.saves import Attempt, Progress, progress_file
 from game.app.screens import (
@@ -64,6 +65,7 @@ MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT)  # drawn instead of the world
 def play_in_window(run: Run) -> int:
     """The interactive loop; returns when the window closes or a scripted run ends."""
     assets = load_assets()
+    renderer = WorldRenderer(assets)  # keeps the tile caches and sprite group between frames
     clock = pygame.time.Clock()
     stepper = FixedStep()
     scripted = run.script is not None
@@ -166,7 +168,7 @@ def play_in_window(run: Run) -> int:
                 if run.finished() or finish is not None:
                     break
             if run.finished() and (scripted or run.args.ticks is not None):
-                run.write_outputs(render_frame(run.campaign, debug=debug, assets=assets))
+                run.write_outputs(render_frame(run.campaign, debug=debug, renderer=renderer))
                 return EXIT_OK
             if banner is not None:
                 menus = cleared(menus)
@@ -191,7 +193,7 @@ def play_in_window(run: Run) -> int:
         # top, then a problem to report, if there is one.
         target = pygame.display.get_surface()
         if menus.screen not in MENU_SCREENS:
-            render_frame(run.campaign, debug=debug, assets=assets, frame=frame,
+            render_frame(run.campaign, debug=debug, renderer=renderer, frame=frame,
                          fps=clock.get_fps(), update_ms=run.last_update_ms,
                          world=banner.world if banner is not None else None)
         if banner is not None:

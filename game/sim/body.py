@@ -1,31 +1,28 @@
-"""A moving body: a sprite whose exact position is a float box and whose Rect follows it.
+"""A moving body: a sprite with a velocity, whose exact position is a float box.
 
-Where it sits: the base of :class:`game.sim.player.Player` and :class:`game.sim.enemy.Enemy`.
+Where it sits: the base of :class:`game.sim.player.Player` and :class:`game.sim.enemy.Enemy`;
+itself a :class:`~game.sim.sprite.BoxSprite`. Only the movement code changes ``box`` (through
+:meth:`BoxSprite.place`, which derives the drawn ``rect`` in the same call).
 
 What it teaches: pygame 2.6 Rects hold integers, so ``rect.x += 0.4`` never moves anything.
-The true position is the float :class:`~game.collision.aabb.Box`; :meth:`Body.place` is the *one*
-place the Rect is derived from it (with ``math.floor``, inside ``Box.to_rect``), so the
-drawn sprite and the hitbox can never drift apart ("ghost rects").
+The true position is the float :class:`~game.collision.aabb.Box`, and a body's moves are
+recorded (``last_x``, ``last_y``) so that triggers can test the whole path it travelled.
 """
 
 from __future__ import annotations
 
-import pygame
-
 from game.collision.aabb import Box
 from game.sim.movement import Move
 from game.sim.platforms import Platform
+from game.sim.sprite import BoxSprite
 from game.sim.tilegrid import TileKind, TileShape
 
 
-class Body(pygame.sprite.Sprite):
+class Body(BoxSprite):
     """A sprite with a float hitbox, a velocity in px/s and its last two axis moves."""
 
-    image: pygame.Surface
-    rect: pygame.Rect
-
     def __init__(self, box: Box) -> None:
-        super().__init__()
+        super().__init__(box)
         self.vx = 0.0  # px/s, right is positive
         self.vy = 0.0  # px/s, down is positive
         self.on_ground = False
@@ -35,9 +32,6 @@ class Body(pygame.sprite.Sprite):
         self.corner_correction_px = 0.0  # how far a head bump may slide past a corner
         self.last_x: Move | None = None  # recorded for the debug overlay
         self.last_y: Move | None = None
-        self.image = pygame.Surface((max(1, int(box.w)), max(1, int(box.h))))
-        self.box = box
-        self.rect = box.to_rect()
 
     def teleport(self, box: Box) -> None:
         """Place the body somewhere new with no path behind it (a respawn, a level start)."""
@@ -66,8 +60,3 @@ class Body(pygame.sprite.Sprite):
         if not moves:
             return self.box.overlaps(region)
         return any(m.path.overlaps(region) for m in moves)
-
-    def place(self, box: Box) -> None:
-        """Set the exact position; the Rect is derived here and nowhere else."""
-        self.box = box
-        self.rect = box.to_rect()

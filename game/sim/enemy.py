@@ -3,19 +3,33 @@
 Where it sits: step 1 of a tick chooses each enemy's velocity; the enemies then move with
 the same axis passes as the player (:mod:`game.sim.movement`), and :meth:`Enemy.react` turns
 them round when a wall stops them. Both kinds turn back at a ledge rather than fall off it.
+A stomped enemy leaves play at once and a :class:`Squashed` sprite takes its place on
+screen for a moment: drawn, never collided with.
 """
 
 from __future__ import annotations
 
+import math
 from enum import Enum
+
+import pygame
 
 from game.collision.aabb import Box
 from game.sim.body import Body
 from game.sim.movement import Move
+from game.sim.sprite import BoxSprite, Strip, animation_index
 from game.sim.tilegrid import Solids, TileKind
 from game.sim.tuning import Tuning
 
 LEDGE_PROBE_PX = 1.0  # size of the square looked at just beyond the leading foot
+
+# The enemy strip (assets/README.md): 0-1 walker walk, 2 squashed, 3-4 hopper; facing right.
+WALK_FPS = 4
+WALK_FRAMES = (0, 1)
+SQUASHED_FRAME = 2
+HOPPER_SITTING_FRAME = 3
+HOPPER_AIRBORNE_FRAME = 4
+WALK_PHASE_COL_PX = 16  # walkers that start a 16 px column apart step one frame apart
 
 
 class EnemyKind(Enum):
@@ -33,6 +47,7 @@ class Enemy(Body):
         self.kind = kind
         self.direction = -1
         self.rest_ticks_left = 0
+        self.phase = math.floor(box.x / WALK_PHASE_COL_PX)
 
     def decide(self, grid: Solids, tuning: Tuning) -> None:
         """Turn at a ledge, then walk (or hop) on, and fall."""
@@ -65,3 +80,28 @@ class Enemy(Body):
             self.direction = -self.direction
         if y_move.hit is not None:
             self.vy = 0.0
+
+    def frame_image(self, strip: Strip, frame: int) -> pygame.Surface:
+        """A hopper sits or leaps; a walker steps. Either faces the way it goes."""
+        if self.kind is EnemyKind.HOPPER:
+            index = HOPPER_SITTING_FRAME if self.on_ground else HOPPER_AIRBORNE_FRAME
+        else:
+            index = animation_index(frame, WALK_FPS, WALK_FRAMES, self.phase)
+        return strip.frame(index, self.direction)
+
+
+class Squashed(BoxSprite):
+    """Where an enemy was stomped: shown flattened for ``ticks_left`` more ticks, then gone."""
+
+    def __init__(self, box: Box, ticks: int) -> None:
+        super().__init__(box)
+        self.ticks_left = ticks
+
+    def fade(self) -> None:
+        """One tick less on screen; leave every group when the time is up."""
+        self.ticks_left -= 1
+        if self.ticks_left <= 0:
+            self.kill()
+
+    def frame_image(self, strip: Strip, frame: int) -> pygame.Surface:
+        return strip.frame(SQUASHED_FRAME)

@@ -25,9 +25,8 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-import pygame
-
 from game.collision.aabb import Box
+from game.sim.sprite import Anchor, BoxSprite
 from game.sim.tilegrid import TileGrid, TileKind, TileShape
 
 Point = tuple[float, float]
@@ -81,21 +80,17 @@ class PlatformSpec:
     speed_px_s: float
 
 
-class Platform(pygame.sprite.Sprite):
-    """A moving solid. ``box`` is exact; ``rect`` is derived from it for drawing."""
+class Platform(BoxSprite):
+    """A moving solid. ``box`` is exact; its picture fills the box (its hitbox is its look)."""
 
-    image: pygame.Surface
-    rect: pygame.Rect
+    anchor = Anchor.TOP_LEFT
 
     def __init__(self, spec: PlatformSpec, number: int) -> None:
-        super().__init__()
+        x, y = spec.path.point_at(0.0)
+        super().__init__(Box(x, y, spec.width_px, spec.height_px))
         self.spec = spec
         self.number = number
         self.travelled_px = 0.0
-        x, y = spec.path.point_at(0.0)
-        self.box = Box(x, y, spec.width_px, spec.height_px)
-        self.rect = self.box.to_rect()
-        self.image = pygame.Surface(self.rect.size)
 
     @property
     def shape(self) -> TileShape:
@@ -106,10 +101,6 @@ class Platform(pygame.sprite.Sprite):
         self.travelled_px += self.spec.speed_px_s * dt_s
         x, y = self.spec.path.point_at(self.travelled_px)
         return x - self.box.x, y - self.box.y
-
-    def place(self, box: Box) -> None:
-        self.box = box
-        self.rect = box.to_rect()
 
 
 @dataclass

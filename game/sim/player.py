@@ -17,13 +17,25 @@ What it teaches: the forgiving rules that make a platformer feel good, each a tu
 
 from __future__ import annotations
 
+import pygame
+
 from game.collision.aabb import Box
 from game.sim.body import Body
 from game.sim.inputs import Action, Actions
 from game.sim.movement import Move, Side
+from game.sim.sprite import ANIMATION_HZ, Strip, animation_index
 from game.sim.tuning import Tuning
 
 DROP_THROUGH_TICKS = 8  # how long one-way platforms are ignored after down + jump
+
+# The player's strip (assets/README.md): 0-1 idle, 2-5 run, 6 jump, 7 fall; facing right.
+IDLE_FPS = 2
+IDLE_FRAMES = (0, 1)
+RUN_FPS = 12
+RUN_FRAMES = (2, 3, 4, 5)
+JUMP_FRAME = 6  # rising
+FALL_FRAME = 7
+BLINK_HZ = 10  # while invulnerable after a hit, the player flickers at this rate
 
 
 def approach(value: float, target: float, step: float) -> float:
@@ -125,3 +137,15 @@ class Player(Body):
         self.rising_from_jump = False
         self.coyote_ticks_left = self.jump_buffer_ticks_left = 0
         self.invulnerable_ticks_left = invulnerable_ticks
+
+    def frame_image(self, strip: Strip, frame: int) -> pygame.Surface:
+        """Jump or fall in the air, run or idle on the ground; flickering while invulnerable."""
+        if self.invulnerable and (frame * 2 * BLINK_HZ // ANIMATION_HZ) % 2 == 1:
+            return strip.blank
+        if not self.on_ground:
+            index = JUMP_FRAME if self.vy < 0 else FALL_FRAME
+        elif self.vx != 0:
+            index = animation_index(frame, RUN_FPS, RUN_FRAMES)
+        else:
+            index = animation_index(frame, IDLE_FPS, IDLE_FRAMES)
+        return strip.frame(index, self.facing)

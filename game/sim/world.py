@@ -33,7 +33,7 @@ from game.collision.aabb import Box
 from game.collision.contacts import ContactTracker
 from game.sim.body import Body
 from game.sim.camera import Camera
-from game.sim.enemy import Enemy, EnemyKind
+from game.sim.enemy import Enemy, EnemyKind, Squashed
 from game.sim.inputs import Actions
 from game.sim.level import Level
 from game.sim.movement import (
@@ -87,14 +87,6 @@ class Event:
     where: Box | None = None
 
 
-@dataclass(frozen=True)
-class Squash:
-    """Where an enemy was stomped, kept a few ticks so the renderer can show it flattened."""
-
-    box: Box
-    ticks_left: int
-
-
 @dataclass
 class TickStats:
     """What the last tick cost, recorded for the debug overlay and the report."""
@@ -126,7 +118,7 @@ class World:
         self.checkpoints: pygame.sprite.Group[Checkpoint] = pygame.sprite.Group(
             Checkpoint(box) for box in self.level.checkpoints)
         self.checkpoint_reached: int | None = None
-        self.squashed: list[Squash] = []  # stomped enemies, shown flat for a moment
+        self.squashed: pygame.sprite.Group[Squashed] = pygame.sprite.Group()  # drawn only
         # A spawn drawn inside a wall is moved to the nearest free place before play starts.
         self.spawn = nearest_free_place(self.grid, self.level.spawn)
         self.player = Player(self.spawn, self.tuning)
@@ -158,8 +150,8 @@ class World:
         self.grid.stats.reset()
         started = time.perf_counter()
 
-        self.squashed = [Squash(s.box, s.ticks_left - 1) for s in self.squashed
-                         if s.ticks_left > 1]
+        for squash in self.squashed:  # a Group iterates over a copy: kill() inside is safe
+            squash.fade()
 
         # 1. Intent: entities choose velocities; none of them moves itself.
         if self.player.decide(held, self.tuning):
@@ -206,6 +198,8 @@ class World:
             elif kind == "checkpoint":
                 self.spawn = self._checkpoint_spawn(number)
                 self.checkpoint_reached = number
+                for flag_number, flag in enumerate(self.checkpoints):
+                    flag.reached = flag_number == number
                 events.append(Event(EventKind.CHECKPOINT, number))
 
         # 8. Enemies: landing on top is a stomp; any other touch hurts. Spikes hurt for as
@@ -217,7 +211,7 @@ class World:
                 enemy = self.enemy_by_number[number]
                 if self._came_from_above(before[self.player], before[enemy]):
                     enemy.kill()
-                    self.squashed.append(Squash(enemy.box, SQUASH_TICKS))
+                    self.squashed.add(Squashed(enemy.box, SQUASH_TICKS))
                     self.player.bounce(self.tuning.stomp_bounce_px_s)
                     events.append(Event(EventKind.STOMP, 1, enemy.box))
                 elif not self.player.invulnerable:
