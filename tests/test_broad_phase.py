@@ -8,6 +8,7 @@ straddling cell borders, all piled at one point. Work is checked by counts, neve
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TypeVar
 
 import pytest
 from hypothesis import given, settings
@@ -61,7 +62,10 @@ box_lists = st.one_of(st.lists(boxes, max_size=25), piles, crowds,
                       st.builds(lambda a, b: a + b, st.lists(boxes, max_size=10), piles))
 
 
-def filled(phase: BroadPhase[int], items: list[Box]) -> BroadPhase[int]:
+Phase = TypeVar("Phase", bound=BroadPhase[int])
+
+
+def filled(phase: Phase, items: list[Box]) -> Phase:
     for key, box in enumerate(items):
         phase.insert(key, box)
     return phase
@@ -203,7 +207,7 @@ def test_grid_files_negative_coordinates_with_floor_not_truncation() -> None:
 
 def test_grid_files_a_box_whose_width_is_lost_to_rounding() -> None:
     # 0.5 + 1e-59 == 0.5, so the right edge equals the left; Box.overlaps still counts it.
-    grid = filled(SpatialGrid(cell_size_px=0.5), [Box(0, 0, 1, 1), Box(0.5, 0, 1e-59, 1)])
+    grid = filled(SpatialGrid[int](cell_size_px=0.5), [Box(0, 0, 1, 1), Box(0.5, 0, 1e-59, 1)])
     assert grid.pairs() == {(0, 1)}
 
 
@@ -216,21 +220,21 @@ def test_grid_box_larger_than_a_cell_is_filed_in_every_cell_it_covers() -> None:
 
 
 def test_grid_never_tests_boxes_in_distant_cells() -> None:
-    grid = filled(SpatialGrid(cell_size_px=CELL_PX), [Box(i * 50 + 1, 1, 10, 10)
+    grid = filled(SpatialGrid[int](cell_size_px=CELL_PX), [Box(i * 50 + 1, 1, 10, 10)
                                                       for i in range(20)])
     assert grid.pairs() == set()
     assert grid.stats.pair_tests == 0
 
 
 def test_grid_tests_a_pair_sharing_many_cells_only_once() -> None:
-    grid = filled(SpatialGrid(cell_size_px=CELL_PX), [Box(1, 1, 40, 40), Box(2, 2, 40, 40)])
+    grid = filled(SpatialGrid[int](cell_size_px=CELL_PX), [Box(1, 1, 40, 40), Box(2, 2, 40, 40)])
     assert len(grid.occupied_cells()) == 9
     assert grid.pairs() == {(0, 1)}
     assert grid.stats.pair_tests == 1
 
 
 def test_grid_query_visits_only_the_cells_it_covers() -> None:
-    grid = filled(SpatialGrid(cell_size_px=CELL_PX), [Box(i * 20 + 1, j * 20 + 1, 4, 4)
+    grid = filled(SpatialGrid[int](cell_size_px=CELL_PX), [Box(i * 20 + 1, j * 20 + 1, 4, 4)
                                                       for i in range(10) for j in range(10)])
     grid.stats.reset()
     assert grid.query(Box(21, 21, 8, 8)) == {11}
@@ -239,7 +243,7 @@ def test_grid_query_visits_only_the_cells_it_covers() -> None:
 
 
 def test_grid_huge_box_is_kept_aside_and_still_pairs() -> None:
-    grid = filled(SpatialGrid(cell_size_px=CELL_PX),
+    grid = filled(SpatialGrid[int](cell_size_px=CELL_PX),
                   [Box(-1e6, -1e6, 2e6, 2e6), Box(5, 5, 2, 2), Box(2e6, 0, 1, 1)])
     assert grid.oversize() == {0}
     assert grid.occupied_cells() == {(0, 0), (125000, 0)}
@@ -247,14 +251,14 @@ def test_grid_huge_box_is_kept_aside_and_still_pairs() -> None:
 
 
 def test_grid_huge_query_looks_at_occupied_cells_not_every_covered_one() -> None:
-    grid = filled(SpatialGrid(cell_size_px=CELL_PX), [Box(5, 5, 2, 2), Box(500, 500, 2, 2)])
+    grid = filled(SpatialGrid[int](cell_size_px=CELL_PX), [Box(5, 5, 2, 2), Box(500, 500, 2, 2)])
     grid.stats.reset()
     assert grid.query(Box(-1e6, -1e6, 2e6, 2e6)) == {0, 1}
     assert grid.stats.cells_visited == 2
 
 
 def test_grid_move_within_the_same_cells_keeps_the_filing() -> None:
-    grid = filled(SpatialGrid(cell_size_px=CELL_PX), [Box(1, 1, 4, 4)])
+    grid = filled(SpatialGrid[int](cell_size_px=CELL_PX), [Box(1, 1, 4, 4)])
     grid.move(0, Box(9, 9, 4, 4))
     assert grid.occupied_cells() == {(0, 0)}
     grid.move(0, Box(-9, 9, 4, 4))
@@ -263,7 +267,7 @@ def test_grid_move_within_the_same_cells_keeps_the_filing() -> None:
 
 
 def test_grid_removing_every_item_leaves_no_cells_behind() -> None:
-    grid = filled(SpatialGrid(cell_size_px=CELL_PX), [Box(i * 7.0, -i * 3.0, 30, 30)
+    grid = filled(SpatialGrid[int](cell_size_px=CELL_PX), [Box(i * 7.0, -i * 3.0, 30, 30)
                                                       for i in range(15)])
     for key in range(15):
         grid.remove(key)
@@ -274,7 +278,7 @@ def test_grid_removing_every_item_leaves_no_cells_behind() -> None:
 @settings(max_examples=60, deadline=None)
 @given(items=box_lists, probes=st.lists(boxes, min_size=1, max_size=10))
 def test_a_grid_query_never_changes_the_grid(items: list[Box], probes: list[Box]) -> None:
-    grid = filled(SpatialGrid(cell_size_px=CELL_PX, max_cells_per_item=16), items)
+    grid = filled(SpatialGrid[int](cell_size_px=CELL_PX, max_cells_per_item=16), items)
     cells, oversize, pairs = grid.occupied_cells(), grid.oversize(), grid.pairs()
     for probe in probes:
         grid.query(probe)
@@ -284,7 +288,7 @@ def test_a_grid_query_never_changes_the_grid(items: list[Box], probes: list[Box]
 
 
 def test_a_grid_query_in_empty_space_creates_no_cells() -> None:
-    grid = filled(SpatialGrid(cell_size_px=CELL_PX), [Box(0, 0, 4, 4)])
+    grid = filled(SpatialGrid[int](cell_size_px=CELL_PX), [Box(0, 0, 4, 4)])
     assert grid.query(Box(100, 100, 64, 64)) == set()
     assert grid.occupied_cells() == {(0, 0)}
 
@@ -337,14 +341,14 @@ def test_quadtree_item_straddling_a_child_border_stays_in_the_parent() -> None:
 
 
 def test_quadtree_items_outside_its_bounds_are_still_found() -> None:
-    tree = filled(Quadtree(Box(0, 0, 64, 64), capacity=1, max_depth=4),
+    tree = filled(Quadtree[int](Box(0, 0, 64, 64), capacity=1, max_depth=4),
                   [Box(-100, -100, 10, 10), Box(-95, -95, 10, 10), Box(10, 10, 4, 4)])
     assert tree.pairs() == {(0, 1)}
     assert tree.query(Box(-92, -92, 1, 1)) == {0, 1}
 
 
 def test_quadtree_query_skips_subtrees_it_does_not_touch() -> None:
-    tree = filled(Quadtree(TREE_BOUNDS, capacity=1, max_depth=6),
+    tree = filled(Quadtree[int](TREE_BOUNDS, capacity=1, max_depth=6),
                   [Box(x, y, 4, 4) for x in range(-250, 250, 40) for y in range(-250, 250, 40)])
     tree.stats.reset()
     assert tree.query(Box(-249, -249, 2, 2)) == {0}
@@ -352,7 +356,7 @@ def test_quadtree_query_skips_subtrees_it_does_not_touch() -> None:
 
 
 def test_quadtree_collapses_when_removals_leave_it_sparse() -> None:
-    tree = filled(Quadtree(TREE_BOUNDS, capacity=2, max_depth=6),
+    tree = filled(Quadtree[int](TREE_BOUNDS, capacity=2, max_depth=6),
                   [Box(i * 30 - 200, i * 30 - 200, 4, 4) for i in range(12)])
     assert tree.node_count() > 1
     for key in range(10):
@@ -363,7 +367,7 @@ def test_quadtree_collapses_when_removals_leave_it_sparse() -> None:
 
 
 def test_quadtree_query_never_changes_the_tree() -> None:
-    tree = filled(Quadtree(TREE_BOUNDS, capacity=2, max_depth=6),
+    tree = filled(Quadtree[int](TREE_BOUNDS, capacity=2, max_depth=6),
                   [Box(i * 13.0 - 200, i * 7.0 - 100, 9, 9) for i in range(40)])
     shape = [(node.bounds, set(node.items)) for node in tree.nodes()]
     for probe in [Box(-300, -300, 600, 600), Box(5, 5, 1, 1), Box(1e5, 1e5, 1, 1)]:
@@ -384,19 +388,19 @@ def test_quadtree_rebuild_matches_a_fresh_tree() -> None:
 # --- sort and sweep ---------------------------------------------------------------------------
 
 def test_sort_and_sweep_never_tests_boxes_apart_on_x() -> None:
-    sweep = filled(SortAndSweep(), [Box(i * 20.0, (i % 3) * 5.0, 10, 10) for i in range(50)])
+    sweep = filled(SortAndSweep[int](), [Box(i * 20.0, (i % 3) * 5.0, 10, 10) for i in range(50)])
     assert sweep.pairs() == set()
     assert sweep.stats.pair_tests == 0
 
 
 def test_sort_and_sweep_tests_a_column_of_boxes_against_each_other() -> None:
     # Its worst case: everything overlaps on x, so only the y test separates them.
-    sweep = filled(SortAndSweep(), [Box(0, i * 20.0, 10, 10) for i in range(10)])
+    sweep = filled(SortAndSweep[int](), [Box(0, i * 20.0, 10, 10) for i in range(10)])
     assert sweep.pairs() == set()
     assert sweep.stats.pair_tests == 10 * 9 // 2
 
 
 def test_sort_and_sweep_query_stops_at_boxes_starting_right_of_it() -> None:
-    sweep = filled(SortAndSweep(), [Box(i * 20.0, 0, 10, 10) for i in range(50)])
+    sweep = filled(SortAndSweep[int](), [Box(i * 20.0, 0, 10, 10) for i in range(50)])
     assert sweep.query(Box(25, 5, 10, 1)) == {1}
     assert sweep.stats.pair_tests == 2       # boxes 0 and 1; box 2 starts right of x = 35

@@ -191,6 +191,7 @@ def test_an_attempt_times_a_finished_level_and_counts_its_coins() -> None:
             exit_tick = campaign.ticks
         if (finish := attempt.after_tick(campaign, events)) is not None:
             finishes.append(finish)
+    assert exit_tick is not None
     assert finishes == [Finish("01-first-steps.tmx", exit_tick, campaign.coins_collected,
                                "02-over-the-gaps.tmx")]
     assert campaign.coins_collected > 0
