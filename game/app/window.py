@@ -10,6 +10,11 @@ Start; Resume, Restart level, Quit to title), game over and won (Enter or A retu
 title). Arrows, W/S, the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B
 go back. A scripted run (``--inputs``) or one given ``--level`` skips the title; a scripted
 run ends at the end of the run, like a headless one.
+
+The window opens at the largest whole-number scale of the 320x180 screen that takes at most
+:data:`DESKTOP_SHARE_PERCENT` of the desktop each way (room for a title bar and a taskbar),
+centred on it (:func:`window_scale`, :func:`fit_window`); whole numbers keep every pixel
+square. F11 (or ``fullscreen`` in the settings) fills the screen instead.
 """
 
 from __future__ import annotations
@@ -18,6 +23,7 @@ import time
 from dataclasses import replace
 
 import pygame
+from pygame._sdl2.video import WINDOWPOS_CENTERED, Window
 
 from game.app.assets import Assets, load_assets
 from game.app.audio import Audio
@@ -56,10 +62,39 @@ from game.app.screens import (
 from game.app.settings import Settings, settings_file
 from game.app.watch import FileWatcher
 from game.levels import FIRST_LEVEL, LevelError
+from game.sim.camera import VIEW_H_PX, VIEW_W_PX
 from game.sim.campaign import Campaign, Outcome
 from game.sim.fixed_step import FixedStep
 
 MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT)  # drawn instead of the world
+DESKTOP_SHARE_PERCENT = 90  # the window takes at most this much of the desktop each way
+
+
+def window_scale(desktop: tuple[int, int], view: tuple[int, int] = (VIEW_W_PX, VIEW_H_PX),
+                 share_percent: int = DESKTOP_SHARE_PERCENT) -> int:
+    """The largest whole-number scale of ``view`` within ``share_percent`` of ``desktop``
+    each way; 1 if even that does not fit.
+
+    >>> [window_scale(d) for d in ((1920, 1080), (1280, 720), (2560, 1440), (800, 600))]
+    [5, 3, 7, 2]
+    """
+    room_w, room_h = (side * share_percent // 100 for side in desktop)
+    return max(1, min(room_w // view[0], room_h // view[1]))
+
+
+def fit_window(window: Window) -> None:
+    """Size the window by :func:`window_scale` for the desktop it is on and centre it there.
+    (``pygame.SCALED`` alone would fill the whole desktop.)
+
+    ``window`` is ``Window.from_display_module()``, kept for as long as the window is open:
+    SDL holds a pointer to that object and hands it to every window event, so letting it be
+    collected crashes the next event."""
+    desktops = pygame.display.get_desktop_sizes()
+    desktop = desktops[window.display_index] if window.display_index < len(desktops) else (
+        VIEW_W_PX, VIEW_H_PX)
+    scale = window_scale(desktop)
+    window.size = (VIEW_W_PX * scale, VIEW_H_PX * scale)
+    window.position = WINDOWPOS_CENTERED
 
 
 def play_in_window(run: Run) -> int:
@@ -83,6 +118,8 @@ def play_in_window(run: Run) -> int:
         progress, progress_problem = progress_store.load(Progress.from_json, Progress)
         notice = settings_problem or progress_problem
     keys, buttons = settings.key_codes(), settings.button_numbers()
+    window = Window.from_display_module()  # held while the window is open (see fit_window)
+    fit_window(window)
     if settings.fullscreen:
         pygame.display.toggle_fullscreen()
     audio = Audio()  # silent, without a word, when there is no sound card
@@ -108,6 +145,8 @@ def play_in_window(run: Run) -> int:
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_F11:
                 pygame.display.toggle_fullscreen()
                 settings.fullscreen = not settings.fullscreen
+                if not settings.fullscreen:
+                    fit_window(window)  # back to the scaled, centred window
                 if personal:
                     notice = settings_store.save(settings.to_json()) or notice
             elif (nav := _nav(event, stick_edges, menus.screen)) is not None:
