@@ -21,6 +21,7 @@ What it teaches (read the colours):
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 import pygame
 
@@ -143,7 +144,7 @@ def _contact_line(event: ContactEvent[ContactKey]) -> str:
 
 
 def _draw_panel(target: pygame.Surface, world: World, assets: Assets, fps: float,
-                update_ms: float) -> None:
+                update_ms: float, extra_lines: Sequence[str] = ()) -> None:
     player, stats = world.player, world.stats
     ground = "ground" if player.on_ground else "air"
     lines = (
@@ -155,6 +156,7 @@ def _draw_panel(target: pygame.Surface, world: World, assets: Assets, fps: float
         "walls: tile grid + sweeps",
         f"enemies: brute force x{len(world.enemies)}",
         *(_contact_line(event) for event in list(world.contacts.log)[-CONTACT_LINES:]),
+        *extra_lines,
     )
     font = assets.small_font
     line_h = font.get_linesize()
@@ -172,11 +174,12 @@ def _draw_panel(target: pygame.Surface, world: World, assets: Assets, fps: float
 
 
 def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float,
-               update_ms: float) -> None:
+               update_ms: float, extra_lines: Sequence[str] = ()) -> None:
     """Draw the overlay for the last tick: checked tiles, sweeps, hitboxes, and the numbers.
 
     ``fps`` is the measured frame rate; ``update_ms`` is how long the last frame's ticks
-    took, in milliseconds. Reads ``world`` and changes none of it.
+    took, in milliseconds; ``extra_lines`` end the panel (the window's stepping keys and
+    state, :mod:`game.app.stepping`). Reads ``world`` and changes none of it.
     """
     camera = world.camera
     wash = pygame.Surface(target.get_size(), pygame.SRCALPHA)  # translucent fills go here
@@ -197,4 +200,4 @@ def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float,
     for bar in bars:
         target.fill(HIT_COLOR, bar)
     _draw_outlines(target, world)
-    _draw_panel(target, world, assets, fps, update_ms)
+    _draw_panel(target, world, assets, fps, update_ms, extra_lines)

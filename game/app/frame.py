@@ -6,6 +6,8 @@ draw frames with it (the window every frame, a headless run once for ``--screens
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import pygame
 
 from game.app.assets import Assets, load_assets
@@ -18,7 +20,8 @@ from game.sim.world import World
 
 def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = None,
                  renderer: WorldRenderer | None = None, frame: int = 0, fps: float = 0.0,
-                 update_ms: float = 0.0, world: World | None = None) -> pygame.Surface:
+                 update_ms: float = 0.0, world: World | None = None,
+                 debug_lines: Sequence[str] = ()) -> pygame.Surface:
     """Draw the current state of play on the display surface and return it: the campaign's
     world, or ``world`` (a level just finished, still on screen under its banner).
 
@@ -33,5 +36,5 @@ def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = Non
     renderer.draw(target, world, frame or campaign.ticks)
     draw_hud(target, campaign, assets)
     if debug:
-        draw_debug(target, world, assets, fps, update_ms)
+        draw_debug(target, world, assets, fps, update_ms, debug_lines)
     return target

@@ -7,11 +7,12 @@ any of them.
 
 A frame in the window (:mod:`game.app.window`), in order:
 
-1. **Events**: quit, pads plugged in or out, F1 (debug overlay), F11 (fullscreen), and
+1. **Events**: quit, pads plugged in or out, F1 (debug overlay), F2-F4 (with the overlay
+   on: freeze, one tick, quarter speed; :mod:`game.app.stepping`), F11 (fullscreen), and
    menu presses from keys and pads (:mod:`game.app.menus`).
-2. **Ticks**: the fixed-step loop (:mod:`game.sim.fixed_step`) says how many 1/60 s ticks are due;
-   each one reads the held actions (keyboard and pads together, or the script) and calls
-   ``Campaign.tick``.
+2. **Ticks**: the fixed-step loop (:mod:`game.sim.fixed_step`) says how many 1/60 s ticks are
+   due (none while frozen, one per F3); each one reads the held actions (keyboard and pads
+   together, or the script) and calls ``Campaign.tick``.
 3. **Draw**: world, HUD, the debug overlay if on, then any screen (title, pause, ...).
 
 Headless runs skip 1 and 3 and step as fast as the machine allows.

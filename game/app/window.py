@@ -60,6 +60,7 @@ from game.app.screens import (
     draw_win,
 )
 from game.app.settings import Settings, settings_file
+from game.app.stepping import TickControl
 from game.app.watch import FileWatcher
 from game.levels import FIRST_LEVEL, LevelError
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
@@ -103,6 +104,7 @@ def play_in_window(run: Run) -> int:
     renderer = WorldRenderer(assets)  # keeps the tile caches and sprite group between frames
     clock = pygame.time.Clock()
     stepper = FixedStep()
+    stepping = TickControl()  # with the overlay on: freeze, one tick, quarter speed
     scripted = run.script is not None
     menus = Menus(Screen.PLAYING if scripted or run.args.level else Screen.TITLE)
     debug = bool(run.args.debug)
@@ -142,6 +144,8 @@ def play_in_window(run: Run) -> int:
             using_pad = pad_in_use(event, using_pad)
             if event.type == pygame.KEYDOWN and event.key == pygame.K_F1:
                 debug = not debug
+            elif event.type == pygame.KEYDOWN and stepping.press(event.key, overlay_on=debug):
+                pass
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_F11:
                 pygame.display.toggle_fullscreen()
                 settings.fullscreen = not settings.fullscreen
@@ -187,7 +191,7 @@ def play_in_window(run: Run) -> int:
         # 2. Ticks: as many fixed 1/60 s steps as real time has paid for, each with what the
         # keyboard and the pads hold; each tick's events sound, and a finished level is saved.
         if menus.screen is Screen.PLAYING:
-            for _ in range(stepper.advance(frame_s)):
+            for _ in range(stepping.ticks_due(stepper, frame_s, overlay_on=debug)):
                 attempt.before_tick(run.campaign)
                 finishing = run.campaign.world
                 try:
@@ -234,7 +238,8 @@ def play_in_window(run: Run) -> int:
         if menus.screen not in MENU_SCREENS:
             render_frame(run.campaign, debug=debug, renderer=renderer, frame=frame,
                          fps=clock.get_fps(), update_ms=run.last_update_ms,
-                         world=banner.world if banner is not None else None)
+                         world=banner.world if banner is not None else None,
+                         debug_lines=stepping.lines(run.campaign.ticks))
         if banner is not None:
             banner.draw(target, assets)
         _draw_screen(target, assets, menus, entries, run.campaign, frame, using_pad)
