@@ -50,3 +50,29 @@ def test_the_readmes_example_commands_run(command: str, tmp_path: Path) -> None:
     result = subprocess.run(args, cwd=ROOT, env=env, capture_output=True, text=True,
                             timeout=300, check=False)
     assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_every_test_the_readme_cites_exists() -> None:
+    """A test the README names (in full, or cut short with ``...`` at either end) is a test
+    function in ``tests/``, and a test file it names exists, so no citation outlives its test."""
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    files = {path.stem: path.read_text(encoding="utf-8")
+             for path in (ROOT / "tests").glob("test_*.py")}
+    defined = set(re.findall(r"^def (test_\w+)", "\n".join(files.values()), re.MULTILINE))
+    cited = [token for token in re.findall(r"`([.\w]+)`", text)
+             if token.startswith(("test_", "..._"))]
+    assert len(cited) > 10
+
+    def exists(token: str) -> bool:
+        head_cut, tail_cut = token.startswith("..."), token.endswith("...")
+        core = token.removeprefix("...").removesuffix("...")
+        if head_cut and tail_cut:
+            return any(core in name for name in defined)
+        if head_cut:
+            return any(name.endswith(core) for name in defined)
+        if tail_cut:
+            return any(name.startswith(core) for name in defined)
+        return token in defined or token in files
+
+    missing = [token for token in cited if not exists(token)]
+    assert missing == [], f"the README cites tests that do not exist: {missing}"

@@ -11,6 +11,7 @@ import pytest
 
 from game.collision.aabb import Box
 from game.sim.campaign import Campaign, Outcome
+from game.sim.enemy import Squashed
 from game.sim.fixed_step import FixedStep
 from game.sim.inputs import NOTHING, Action
 from game.sim.tuning import Tuning
@@ -343,3 +344,28 @@ def test_a_stomp_scores_its_points_and_each_finished_level_leaves_its_tally() ->
     [result] = campaign.results
     assert (result.coins, result.coins_total, result.stomps, result.enemies_total) == (0, 1, 1, 1)
     assert result.ticks == campaign.ticks and result.score == campaign.score == 7
+
+
+def test_enemies_falling_into_the_void_in_the_same_tick_all_leave_play() -> None:
+    level = level_from_ascii([
+        "  EEEE",
+        "      ",
+        "      ",
+        "P     ",
+        "#     ",
+    ])
+    world = World(level, replace(INSTANT, enemy_speed_px_s=0.0))
+    for _ in range(120):
+        world.step(NOTHING)
+        if len(world.enemies) < 4:
+            break
+    assert len(world.enemies) == 0   # all in that tick, not one in two as a list loop leaves
+
+
+def test_stomped_enemies_that_fade_in_the_same_tick_all_leave_the_screen() -> None:
+    world = World(level_from_ascii(["P     ", "######"]))
+    for x in range(4):
+        world.squashed.add(Squashed(Box(x * 16.0, 0.0, 14, 12), ticks=3))
+    for _ in range(3):
+        world.step(NOTHING)
+    assert len(world.squashed) == 0

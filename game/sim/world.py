@@ -4,19 +4,26 @@ Where it sits: the middle of the game. :meth:`World.step` is the whole update, i
 in one function; the campaign (:mod:`game.sim.campaign`) calls it once per tick and the
 renderer (:mod:`game.app.render`) only reads what it leaves behind.
 
-The order of a tick, pinned by ``tests/test_world.py``:
+The order of a tick (``tests/test_tick_order.py`` checks that this list, the numbered
+comments in :meth:`World.step` and the README's tour name the same steps in the same order):
 
 1. **Intent**: the player reads the held actions, the enemies look ahead; each sets a velocity.
-2. **x pass**: every body moves along x, swept against the tile grid, stopping flush.
-3. **y pass**: every body moves along y the same way; the 1-pixel probe sets ``on_ground``.
-4. **React**: bodies read what their moves hit (land, bump, turn round).
-5. **Pickups**: coins by ``groupcollide`` with ``dokill``, on the path the player travelled.
-6. **Contacts**: the pairs the player touches; a tracker turns them into start/end events
-   (entering the exit completes the level).
-7. **Enemies and hazards**: a touch from above is a stomp, any other touch hurts, and so do
+2. **Platforms**: each moving platform advances along its path, pushing the bodies in its way
+   and carrying its riders through the same swept moves, so never into a wall.
+3. **x pass**: every body moves along x, swept against the tile grid, stopping flush.
+4. **y pass**: every body moves along y the same way; the 1-pixel probe sets ``on_ground``.
+5. **React**: bodies read what their moves hit (land, bump, turn round).
+6. **Pickups**: coins by ``groupcollide`` with ``dokill``, on the path the player travelled.
+7. **Contacts**: the pairs the player touches; a tracker turns them into start/end events
+   (entering the exit completes the level, entering a checkpoint moves the respawn point).
+8. **Enemies and hazards**: a touch from above is a stomp, any other touch hurts, and so do
    spikes, for as long as they are touched.
-8. **The void**: falling below the map costs a life; the player respawns at the spawn.
-9. **Camera**: follows the player.
+9. **The void and the crush**: falling below the map, or being pushed into a wall by a
+   platform, costs a life; the player respawns at the spawn or the last checkpoint.
+10. **Camera**: follows the player.
+
+Before step 1 a squashed enemy's time on screen counts down; after step 9 the deepest
+overlap of any body with a solid is measured for the report (it should stay 0).
 
 Solids never go through ``groupcollide``: walls only meet bodies in the movement code.
 """
@@ -202,9 +209,9 @@ class World:
                     flag.reached = flag_number == number
                 events.append(Event(EventKind.CHECKPOINT, number))
 
-        # 8. Enemies: landing on top is a stomp; any other touch hurts. Spikes hurt for as
-        #    long as they are touched (not only on contact), so standing in them when the
-        #    invulnerability runs out still costs a life.
+        # 8. Enemies and hazards: landing on top is a stomp; any other touch hurts. Spikes
+        #    hurt for as long as they are touched (not only on contact), so standing in them
+        #    when the invulnerability runs out still costs a life.
         hurt = False
         for _, (kind, number) in sorted(touching_now):
             if kind == "enemy":
