@@ -110,6 +110,33 @@ class Box(NamedTuple):
             and other.y < self.y + self.h
         )
 
+    def touches(self, other: Box) -> bool:
+        """True when the boxes meet only along an edge or at a corner: no shared interior.
+
+        The third answer beside "overlapping" and "apart". Empty boxes touch nothing, just as
+        they overlap nothing.
+
+        >>> Box(0, 0, 16, 16).touches(Box(16, 4, 8, 8))     # flush against the right edge
+        True
+        >>> Box(0, 0, 16, 16).touches(Box(16, 16, 8, 8))    # corner to corner
+        True
+        >>> Box(0, 0, 16, 16).touches(Box(8, 8, 8, 8))      # overlapping is not touching
+        False
+        >>> Box(0, 0, 0, 16).touches(Box(0, 0, 16, 16))     # a zero-width box: nothing
+        False
+        """
+        return (
+            self.w > 0
+            and self.h > 0
+            and other.w > 0
+            and other.h > 0
+            and self.x <= other.x + other.w
+            and other.x <= self.x + self.w
+            and self.y <= other.y + other.h
+            and other.y <= self.y + self.h
+            and not self.overlaps(other)
+        )
+
     def moved(self, dx: float = 0.0, dy: float = 0.0) -> Box:
         """This box shifted by ``(dx, dy)``.
 
