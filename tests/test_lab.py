@@ -486,6 +486,21 @@ def test_platformer_runs_into_a_wall_and_stops_flush_recording_the_cells_it_swep
     assert scene.body().right == 352
 
 
+def test_the_readme_shows_every_scene_and_links_the_techniques_to_them() -> None:
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    for scene in SCENES:
+        picture = f"assets/screenshots/lab/{scene.name}.png"
+        assert f"![{scene.name}]({picture})" in readme
+        assert (ROOT / picture).exists()
+        module = sys.modules[scene.__module__].__file__
+        assert module is not None
+        link = f"(game/lab/{Path(module).name})"
+        assert link in readme, f"no technique row links to {scene.name}"
+    table = readme.split("| technique | module |")[1].split("\n\n")[0]
+    rows = [row for row in table.splitlines() if row.startswith("| ") and "---" not in row]
+    assert len(rows) >= 15 and all("(game/lab/" in row.rsplit("|", 2)[1] for row in rows)
+
+
 def test_the_lab_adds_nothing_to_the_game() -> None:
     """No module of the game outside the lab imports it, so a tick cannot run lab code."""
     offenders = [p for p in (ROOT / "game").rglob("*.py")

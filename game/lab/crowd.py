@@ -11,6 +11,7 @@ each other: finding pairs is the broad phase's job, and the scenes ask the refer
 
 from __future__ import annotations
 
+import math
 import random
 from dataclasses import dataclass
 
@@ -54,11 +55,16 @@ class Crowd:
             self.boxes[key] = moved
             self.velocities[key] = (vx, vy)
 
-    def key_at(self, point: tuple[float, float]) -> int | None:
-        """The topmost box under the pixel at ``point``, if any."""
+    def key_at(self, point: tuple[float, float], reach_px: float = 0.0) -> int | None:
+        """The topmost box under the pixel at ``point``; failing that, the box whose middle is
+        nearest, if it is within ``reach_px`` (so a hover need not be pixel-exact)."""
         spot = Box(point[0], point[1], 1, 1)
-        return next((key for key in reversed(list(self.boxes))
-                     if self.boxes[key].overlaps(spot)), None)
+        under = next((key for key in reversed(list(self.boxes))
+                      if self.boxes[key].overlaps(spot)), None)
+        if under is not None or not self.boxes:
+            return under
+        nearest = min(self.boxes, key=lambda k: math.dist(self.boxes[k].center, point))
+        return nearest if math.dist(self.boxes[nearest].center, point) <= reach_px else None
 
 
 class CrowdScene(Scene):

@@ -1,10 +1,10 @@
 """Scene ``party-grid``: a uniform grid finds the few pairs worth testing in a crowd.
 
-What it shows: seventy bodies drifting (pause with P), filed by a
+What it shows: seventy bodies drifting (pause with P, then hover at leisure), filed by a
 :class:`~game.collision.broad.spatial_grid.SpatialGrid` whose cell size comes from
 :func:`~game.collision.methods.grid_cell_size_px`. Hover a body: the cells it is filed under
 (:meth:`~game.collision.broad.spatial_grid.SpatialGrid.cell_range`) light up, and the bodies
-sharing those cells, the only neighbours its query tests, are outlined; the panel prints that
+sharing those cells, the only neighbours its query tests, are outlined in white; the panel prints that
 query's counts from the grid's own :class:`~game.collision.broad.brute_force.BroadPhaseStats`.
 For the whole crowd it sets the grid's pair tests against brute force's n(n-1)/2, checks both
 found the same pairs, and times both per frame and per test.
@@ -26,6 +26,7 @@ from game.lab.scene import AREA, Layer
 BODIES = 70
 SEED = 3
 SIZES_PX = (12.0, 28.0)
+HOVER_REACH_PX = 60.0  # the nearest body this close to the mouse counts as hovered
 CROWD_AREA = Box(AREA.x + 8, AREA.y + 8, AREA.w - 16, AREA.h - 16)
 
 
@@ -73,7 +74,7 @@ class PartyGrid(CrowdScene):
             f"  brute {format_ns(brute_ns / max(1, self.brute_tests))}",
             "",
         ]
-        self.hovered = self.crowd.key_at(self.mouse)
+        self.hovered = self.crowd.key_at(self.mouse, HOVER_REACH_PX)
         self.hover_cells: list[tuple[int, int]] = []
         self.neighbours: list[int] = []
         if self.hovered is None:
@@ -112,10 +113,10 @@ class PartyGrid(CrowdScene):
             for key, box in self.crowd.boxes.items():
                 color = canvas.MOVER if key == self.hovered else canvas.STILL
                 canvas.box(surface, box, color)
-        if Layer.PAIRS in layers:
-            for key in self.neighbours:
-                canvas.box(surface, self.crowd.boxes[key], canvas.TESTED, 2)
         if Layer.CONTACTS in layers:
             for a, b in self.pairs:
                 canvas.box(surface, self.crowd.boxes[a], canvas.EXACT, 2)
                 canvas.box(surface, self.crowd.boxes[b], canvas.EXACT, 2)
+        if Layer.PAIRS in layers:
+            for key in self.neighbours:
+                canvas.box(surface, self.crowd.boxes[key], canvas.WHITE, 2)

@@ -202,4 +202,4 @@ class Tunnelling(Scene):
                 canvas.box(surface, flight.box, canvas.MOVER)
             color = canvas.WRONG if flight.outcome.startswith("TUNNELLED") else (
                 canvas.EXACT if flight.done else canvas.DIM)
-            canvas.text(surface, flight.outcome, (AREA.x + 440, round(top) + 4), color, 18)
+            canvas.text(surface, flight.outcome, (AREA.x + 130, round(top) + 4), color, 18)
