@@ -4,8 +4,9 @@ What it shows: seventy bodies drifting (pause with P, then hover at leisure), fi
 :class:`~game.collision.broad.spatial_grid.SpatialGrid` whose cell size comes from
 :func:`~game.collision.methods.grid_cell_size_px`. Hover a body: the cells it is filed under
 (:meth:`~game.collision.broad.spatial_grid.SpatialGrid.cell_range`) light up, and the bodies
-sharing those cells, the only neighbours its query tests, are outlined in white; the panel prints that
-query's counts from the grid's own :class:`~game.collision.broad.brute_force.BroadPhaseStats`.
+sharing those cells, the only neighbours its query tests, are outlined in white; the panel
+prints that query's counts from the grid's own
+:class:`~game.collision.broad.brute_force.BroadPhaseStats`.
 For the whole crowd it sets the grid's pair tests against brute force's n(n-1)/2, checks both
 found the same pairs, and times both per frame and per test.
 """
