@@ -22,11 +22,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from functools import lru_cache
 
 import pygame
 
 from game.app.assets import Assets
-from game.app.hud import HUD_BAR_H_PX, SMALL_TEXT_ANTIALIAS, Color, draw_text
+from game.app.hud import HUD_BAR_H_PX, SMALL_TEXT_ANTIALIAS, Color
 from game.app.render import screen_offset
 from game.collision.aabb import Box
 from game.collision.contacts import Change, ContactEvent
@@ -63,12 +64,39 @@ PANEL_PAD_PX = 3
 PANEL_GAP_PX = 2  # between the HUD bar and the panel
 MS_PER_S = 1000.0
 CONTACT_LINES = 3  # the last few contact starts and ends, from the world's tracker
+TEXT_CACHE_LINES = 128  # rendered panel lines (and backings) kept for the next frames
 
 
 def _screen_rect(box: Box, camera: Camera) -> pygame.Rect:
-    """The box's whole pixels through the camera, as the tiles and sprites are drawn."""
-    dx, dy = screen_offset(camera)
-    return box.to_rect().move(-dx, -dy)
+    """The box's whole pixels through the camera, as the tiles and sprites are drawn (the
+    arithmetic of :meth:`Box.to_rect`, moved by the camera's whole-pixel offset)."""
+    return pygame.Rect(math.floor(box.x) - math.floor(camera.x),
+                       math.floor(box.y) - math.floor(camera.y),
+                       math.ceil(box.w), math.ceil(box.h))
+
+
+class Wash:
+    """Translucent fills, gathered during a frame and then blended in one blit of the
+    smallest surface that holds them all (not a whole-screen layer every frame)."""
+
+    def __init__(self) -> None:
+        self.fills: list[tuple[Color, pygame.Rect]] = []
+
+    def fill(self, color: Color, rect: pygame.Rect) -> None:
+        """Cover ``rect`` with ``color`` (RGBA); a later fill replaces an earlier one."""
+        self.fills.append((color, pygame.Rect(rect)))
+
+    def blend_onto(self, target: pygame.Surface) -> None:
+        if not self.fills:
+            return
+        rects = [rect for _, rect in self.fills]
+        area = rects[0].unionall(rects[1:]).clip(target.get_rect())
+        if not area.w or not area.h:
+            return
+        layer = pygame.Surface(area.size, pygame.SRCALPHA)
+        for color, rect in self.fills:
+            layer.fill(color, rect.move(-area.x, -area.y))
+        target.blit(layer, area.topleft)
 
 
 def _near_cells(grid: TileGrid, boxes: list[Box]) -> set[tuple[int, int]]:
@@ -80,7 +108,7 @@ def _near_cells(grid: TileGrid, boxes: list[Box]) -> set[tuple[int, int]]:
     return cells
 
 
-def _draw_checked_shapes(wash: pygame.Surface, world: World) -> list[tuple[Color, pygame.Rect]]:
+def _draw_checked_shapes(wash: Wash, world: World) -> list[tuple[Color, pygame.Rect]]:
     """Wash the tile shapes in the cells around each body and return their outlines to draw
     (read-only: the cells are read through ``shapes_at``, never ``shapes_in``)."""
     grid, camera = world.grid, world.camera
@@ -98,7 +126,7 @@ def _draw_checked_shapes(wash: pygame.Surface, world: World) -> list[tuple[Color
     return outlines
 
 
-def _draw_sweep(wash: pygame.Surface, move: Move | None, color: Color,
+def _draw_sweep(wash: Wash, move: Move | None, color: Color,
                 camera: Camera) -> pygame.Rect | None:
     """Wash the region one axis move swept; return the bar marking the face it hit, if any."""
     if move is None or not move.swept.is_finite():
@@ -160,17 +188,28 @@ def _draw_panel(target: pygame.Surface, world: World, assets: Assets, fps: float
     )
     font = assets.small_font
     line_h = font.get_linesize()
-    width = max(font.size(line)[0] for line in lines) + 2 * PANEL_PAD_PX
+    faces = [_line_face(font, line) for line in lines]
+    width = max(face.get_width() for face in faces) + 2 * PANEL_PAD_PX
     panel = pygame.Rect(0, HUD_BAR_H_PX + PANEL_GAP_PX, width,
                         len(lines) * line_h + 2 * PANEL_PAD_PX)
-    layer = pygame.Surface(panel.size, pygame.SRCALPHA)
-    layer.fill(PANEL_COLOR)
-    target.blit(layer, panel.topleft)
+    target.blit(_panel_backing(panel.size), panel.topleft)
     y = panel.top + PANEL_PAD_PX
-    for line in lines:
-        draw_text(target, font, line, (panel.left + PANEL_PAD_PX, y), PANEL_TEXT, outline=None,
-                  antialias=SMALL_TEXT_ANTIALIAS)
+    for face in faces:
+        target.blit(face, (panel.left + PANEL_PAD_PX, y))
         y += line_h
+
+
+@lru_cache(maxsize=TEXT_CACHE_LINES)
+def _line_face(font: pygame.font.Font, line: str) -> pygame.Surface:
+    """One line of panel text, rendered once and kept while it keeps being shown."""
+    return font.render(line, SMALL_TEXT_ANTIALIAS, PANEL_TEXT)
+
+
+@lru_cache(maxsize=TEXT_CACHE_LINES)
+def _panel_backing(size: tuple[int, int]) -> pygame.Surface:
+    backing = pygame.Surface(size, pygame.SRCALPHA)
+    backing.fill(PANEL_COLOR)
+    return backing
 
 
 def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float,
@@ -182,7 +221,7 @@ def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float,
     state, :mod:`game.app.stepping`). Reads ``world`` and changes none of it.
     """
     camera = world.camera
-    wash = pygame.Surface(target.get_size(), pygame.SRCALPHA)  # translucent fills go here
+    wash = Wash()  # translucent fills go here
     outlines = _draw_checked_shapes(wash, world)
     bars: list[pygame.Rect] = []
     for body in world.bodies():
@@ -190,7 +229,7 @@ def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float,
             bar = _draw_sweep(wash, move, color, camera)
             if bar is not None:
                 bars.append(bar)
-    target.blit(wash, (0, 0))
+    wash.blend_onto(target)
     for color, rect in outlines:
         rim = rect.inflate(-2 * SHAPE_RIM_INSET_PX, -2 * SHAPE_RIM_INSET_PX)
         pygame.draw.rect(target, SHAPE_RIM_COLOR, rim, width=1)
