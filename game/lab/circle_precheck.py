@@ -30,7 +30,7 @@ PROBE_W_PX, PROBE_H_PX = 70, 44
 class CirclePrecheck(Scene):
     name = "circle-precheck"
     title = "circles as a pre-check before the box test"
-    keys_help = "drag the red box"
+    keys_help = "drag the red box (or any blue one)"
 
     def reset(self) -> None:
         rng = random.Random(SEED)
@@ -46,7 +46,16 @@ class CirclePrecheck(Scene):
         return pygame.Rect(round(x), round(y), PROBE_W_PX, PROBE_H_PX)
 
     def grab_boxes(self) -> dict[str, Box]:
-        return {"probe": Box.from_rect(self.probe())}
+        for number, rect in enumerate(self.crowd):
+            self.pos[str(number)] = (rect.x, rect.y)
+        crowd = {str(number): Box.from_rect(rect) for number, rect in enumerate(self.crowd)}
+        return {**crowd, "probe": Box.from_rect(self.probe())}
+
+    def drag_to(self, key: str, point: tuple[float, float]) -> None:
+        if key == "probe":
+            super().drag_to(key, point)
+        else:
+            self.crowd[int(key)].topleft = (round(point[0]), round(point[1]))
 
     def refresh(self) -> None:
         probe = self.probe()

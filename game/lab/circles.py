@@ -29,10 +29,10 @@ BLOCK = Box(AREA.x + 330, AREA.y + 230, 160, 110)
 class Circles(Scene):
     name = "circles"
     title = "squared distances, and the square box around a circle"
-    keys_help = "drag the balls"
+    keys_help = "drag the balls or the box"
 
     def reset(self) -> None:
-        self.pos = {"ball": (AREA.x + 290.0, AREA.y + 190.0),
+        self.pos = {"block": (BLOCK.x, BLOCK.y), "ball": (AREA.x + 290.0, AREA.y + 190.0),
                     "other": (AREA.x + 150.0, AREA.y + 160.0)}
         self.meter = CostMeter()
 
@@ -42,19 +42,23 @@ class Circles(Scene):
     def other(self) -> Circle:
         return Circle(*self.pos["other"], OTHER_RADIUS_PX)
 
+    def block(self) -> Box:
+        return BLOCK._replace(x=self.pos["block"][0], y=self.pos["block"][1])
+
     def grab_boxes(self) -> dict[str, Box]:
-        return {"other": self.other().bounds(), "ball": self.ball().bounds()}
+        return {"block": self.block(), "other": self.other().bounds(),
+                "ball": self.ball().bounds()}
 
     def refresh(self) -> None:
-        ball, other = self.ball(), self.other()
+        ball, other, block = self.ball(), self.other(), self.block()
         square = ball.bounds()
         self.ball_ball = ball.overlaps(other)
-        self.ball_box = ball.overlaps_box(BLOCK)
-        self.square_box = square.overlaps(BLOCK)
+        self.ball_box = ball.overlaps_box(block)
+        self.square_box = square.overlaps(block)
         self.square_ball = square.overlaps(other.bounds())
         self.meter.time("circle", lambda: ball.overlaps(other))
-        self.meter.time("circle-box", lambda: ball.overlaps_box(BLOCK))
-        self.meter.time("aabb", lambda: square.overlaps(BLOCK))
+        self.meter.time("circle-box", lambda: ball.overlaps_box(block))
+        self.meter.time("aabb", lambda: square.overlaps(block))
         centres = math.dist(self.pos["ball"], self.pos["other"])
         self.lines = [
             f"ball-ball  Circle.overlaps:     {canvas.yes_no(self.ball_ball)}",
@@ -75,14 +79,14 @@ class Circles(Scene):
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:
         ball, other = self.ball(), self.other()
         if Layer.SHAPES in layers:
-            canvas.box(surface, BLOCK, canvas.STILL)
+            canvas.box(surface, self.block(), canvas.STILL)
             pygame.draw.circle(surface, canvas.STILL, self.pos["other"], other.r)
             pygame.draw.circle(surface, canvas.MOVER, self.pos["ball"], ball.r)
         if Layer.BOUNDS in layers:
             wrong = self.square_box and not self.ball_box
             canvas.box(surface, ball.bounds(), canvas.WRONG if wrong else canvas.BOUNDS, 2)
         if Layer.CONTACTS in layers:
-            for hit, at in ((self.ball_box, BLOCK), (self.ball_ball, other.bounds())):
+            for hit, at in ((self.ball_box, self.block()), (self.ball_ball, other.bounds())):
                 if hit:
                     canvas.box(surface, at, canvas.EXACT, 3)
             pygame.draw.line(surface, canvas.DIM, self.pos["ball"], self.pos["other"], 1)

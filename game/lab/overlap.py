@@ -16,7 +16,7 @@ from game.collision.aabb import Box
 from game.lab import canvas
 from game.lab.scene import AREA, Layer, Scene
 
-WALL = Box(AREA.x + 330, AREA.y + 110, 60, 260)
+WALL = Box(AREA.x + 330, AREA.y + 110, 60, 260)  # where the wall starts
 PLAYER_W_PX, PLAYER_H_PX = 48.0, 72.0
 NUDGES = {pygame.K_LEFT: (-1.0, 0.0), pygame.K_RIGHT: (1.0, 0.0),
           pygame.K_UP: (0.0, -1.0), pygame.K_DOWN: (0.0, 1.0)}
@@ -34,19 +34,23 @@ def collision_status(player: Box, wall: Box) -> str:
 class Overlap(Scene):
     name = "overlap"
     title = "test the overlap: colliding, touching or apart"
-    keys_help = "drag the player; arrows nudge 1 px; Z zero-width player"
+    keys_help = "drag player or wall; arrows nudge 1 px; Z zero-width player"
 
     def reset(self) -> None:
-        self.pos = {"player": (WALL.left - PLAYER_W_PX, AREA.y + 200)}  # flush: touching
+        self.pos = {"wall": (WALL.x, WALL.y),
+                    "player": (WALL.left - PLAYER_W_PX, AREA.y + 200)}  # flush: touching
         self.zero_width = False
 
     def player(self) -> Box:
         x, y = self.pos["player"]
         return Box(x, y, 0.0 if self.zero_width else PLAYER_W_PX, PLAYER_H_PX)
 
+    def wall(self) -> Box:
+        return WALL._replace(x=self.pos["wall"][0], y=self.pos["wall"][1])
+
     def grab_boxes(self) -> dict[str, Box]:
         x, y = self.pos["player"]
-        return {"player": Box(x - 4, y, PLAYER_W_PX + 8, PLAYER_H_PX)}
+        return {"wall": self.wall(), "player": Box(x - 4, y, PLAYER_W_PX + 8, PLAYER_H_PX)}
 
     def on_key(self, key: int) -> None:
         if key in NUDGES:
@@ -57,17 +61,17 @@ class Overlap(Scene):
             self.zero_width = not self.zero_width
 
     def refresh(self) -> None:
-        player = self.player()
-        self.answer = collision_status(player, WALL)
+        player, wall = self.player(), self.wall()
+        self.answer = collision_status(player, wall)
         self.lines = [
             f"Collision status: {self.answer}",
             "",
             f"player  Box({player.x:.1f}, {player.y:.1f}, {player.w:g}, {player.h:g})",
-            f"wall    Box({WALL.x:g}, {WALL.y:g}, {WALL.w:g}, {WALL.h:g})",
-            f"Box.overlaps: {player.overlaps(WALL)}",
-            f"Box.touches:  {player.touches(WALL)}",
-            f"penetration:  {player.penetration(WALL):g} px",
-            f"Rect.colliderect: {player.to_rect().colliderect(WALL.to_rect())}",
+            f"wall    Box({wall.x:g}, {wall.y:g}, {wall.w:g}, {wall.h:g})",
+            f"Box.overlaps: {player.overlaps(wall)}",
+            f"Box.touches:  {player.touches(wall)}",
+            f"penetration:  {player.penetration(wall):g} px",
+            f"Rect.colliderect: {player.to_rect().colliderect(wall.to_rect())}",
             "",
             "right edge = wall's left edge:",
             "  touching, not colliding (strict <)",
@@ -76,10 +80,10 @@ class Overlap(Scene):
             self.lines.append("zero width: overlaps nothing")
 
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:
-        player = self.player()
+        player, wall = self.player(), self.wall()
         color = {"colliding": canvas.WRONG, "touching": canvas.EXACT, "apart": canvas.DIM}
         if Layer.SHAPES in layers:
-            canvas.box(surface, WALL, canvas.STILL)
+            canvas.box(surface, wall, canvas.STILL)
             canvas.box(surface, player, canvas.MOVER)
         if Layer.CONTACTS in layers:
             canvas.box(surface, player, color[self.answer], 3)
