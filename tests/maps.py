@@ -12,9 +12,12 @@ from pathlib import Path
 from game.collision.aabb import Box
 from game.sim.level import CoinSpec, EnemySpec, Level
 from game.sim.tilegrid import TileGrid, TileKind, TileShape
+from game.sim.world import Measure
 
 TILE = 16
 KINDS = {"#": TileKind.SOLID, "-": TileKind.ONE_WAY, "^": TileKind.HAZARD}
+# For tests that check max_penetration_px: the tick measures it only when asked.
+MEASURED = Measure(penetration=True)
 
 
 def level_from_ascii(rows: list[str], properties: dict[str, object] | None = None,

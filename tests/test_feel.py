@@ -9,7 +9,7 @@ from game.sim.campaign import Campaign
 from game.sim.inputs import NOTHING, Action, Actions
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
-from tests.maps import level_from_ascii
+from tests.maps import MEASURED, level_from_ascii
 
 RIGHT: Actions = frozenset({Action.RIGHT})
 JUMP: Actions = frozenset({Action.JUMP})
@@ -19,7 +19,7 @@ TUNING = Tuning()
 
 
 def settled(rows: list[str], tuning: Tuning = TUNING, spawn: Box | None = None) -> World:
-    world = World(level_from_ascii(rows, spawn=spawn), tuning)
+    world = World(level_from_ascii(rows, spawn=spawn), tuning, measure=MEASURED)
     for _ in range(30):
         world.step(NOTHING)
     assert world.player.on_ground

@@ -15,7 +15,7 @@ from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, InputScript
 from game.sim.tilegrid import TileKind
 from game.sim.world import EventKind, World
-from tests.maps import write_tmx
+from tests.maps import MEASURED, write_tmx
 
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
 SHIPPED = sorted(LEVELS_DIR.glob("*.tmx"))
@@ -49,7 +49,7 @@ def test_the_checker_names_the_file_and_the_fix_for_a_bad_map(tmp_path: Path) ->
 @pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
 def test_the_scripted_run_reaches_the_exit(level: Path) -> None:
     script = InputScript.load(SCRIPTS / f"{level.stem}.txt")
-    campaign = Campaign(level, loader=load_level)
+    campaign = Campaign(level, loader=load_level, measure=MEASURED)
     while campaign.levels_completed == 0 and campaign.outcome is Outcome.RUNNING:
         campaign.tick(script.held_at(campaign.ticks))
         assert campaign.ticks < 60 * 60, "the script did not reach the exit in a minute"

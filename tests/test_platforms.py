@@ -12,7 +12,7 @@ from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
-from tests.maps import level_from_ascii
+from tests.maps import MEASURED, level_from_ascii
 
 RIGHT = frozenset({Action.RIGHT})
 
@@ -53,7 +53,7 @@ def test_a_player_standing_on_a_platform_is_carried_along_with_it() -> None:
 def test_a_platform_rising_under_the_player_lifts_it() -> None:
     level = with_platform(OPEN, ((32.0, 120.0), (32.0, 20.0)), speed=60.0,
                           spawn=Box(40, 100, 12, 14))
-    world = World(level)
+    world = World(level, measure=MEASURED)
     for _ in range(40):
         world.step(NOTHING)
     platform = next(iter(world.platforms))
@@ -78,7 +78,7 @@ def test_a_platform_never_carries_a_rider_through_a_wall() -> None:
     rows[4] = "          #             "
     level = with_platform(rows, ((32.0, 80.0), (300.0, 80.0)), speed=90.0,
                           spawn=Box(60, 66, 12, 14))
-    world = World(level)
+    world = World(level, measure=MEASURED)
     for _ in range(100):
         world.step(NOTHING)
         assert world.player.box.right <= 10 * 16 or world.player.box.left >= 11 * 16

@@ -6,6 +6,7 @@ import itertools
 import math
 from dataclasses import replace
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -15,8 +16,8 @@ from game.sim.enemy import Squashed
 from game.sim.fixed_step import FixedStep
 from game.sim.inputs import NOTHING, Action
 from game.sim.tuning import Tuning
-from game.sim.world import EventKind, World
-from tests.maps import level_from_ascii
+from game.sim.world import EventKind, Measure, World
+from tests.maps import MEASURED, level_from_ascii
 
 RIGHT = frozenset({Action.RIGHT})
 LEFT = frozenset({Action.LEFT})
@@ -33,7 +34,7 @@ FLAT = [
 
 
 def test_standing_for_600_ticks_never_moves_a_pixel_or_leaves_the_ground() -> None:
-    world = World(level_from_ascii(FLAT))
+    world = World(level_from_ascii(FLAT), measure=MEASURED)
     for _ in range(5):
         world.step(NOTHING)  # fall the few pixels onto the floor
     resting = world.player.box
@@ -209,7 +210,7 @@ def test_map_physics_properties_are_honoured_however_large() -> None:
         "                              #",
         "###############################",
     ], props)
-    world = World(level, INSTANT)
+    world = World(level, INSTANT, measure=MEASURED)
     assert world.tuning.gravity_px_s2 == 1e7
     world.step(NOTHING)   # 9 tiles in one tick: lands flush on the floor at y = 176
     world.step(NOTHING)
@@ -224,7 +225,7 @@ def test_map_physics_properties_are_honoured_however_large() -> None:
 
 def test_a_five_second_stall_runs_a_capped_number_of_ticks_and_passes_no_wall() -> None:
     world = World(level_from_ascii(["        ", "P    #  ", "########"]),
-                  replace(INSTANT, run_speed_px_s=3000.0))
+                  replace(INSTANT, run_speed_px_s=3000.0), measure=MEASURED)
     clock = FixedStep()
     ticks = clock.advance(5.0)
     assert ticks == clock.max_ticks_per_frame
@@ -269,7 +270,7 @@ def test_a_hopper_patrols_in_hops_and_rests_between_them() -> None:
     ])
     spec = level.enemies[0]
     level = replace(level, enemies=(replace(spec, kind="hopper"),))
-    world = World(level, replace(INSTANT, enemy_speed_px_s=60.0))
+    world = World(level, replace(INSTANT, enemy_speed_px_s=60.0), measure=MEASURED)
     hopper = next(iter(world.enemies))
     airborne, xs_on_ground = 0, set()
     for _ in range(300):
@@ -286,7 +287,7 @@ def test_a_hopper_patrols_in_hops_and_rests_between_them() -> None:
 def test_a_body_flung_at_absurd_speeds_keeps_a_rect_pygame_can_hold() -> None:
     props: dict[str, object] = {"gravity": 1e15, "max_fall_speed": 1e14, "jump_speed": 1e14}
     level = level_from_ascii(["P   ", "    ", "####"], props)
-    campaign = Campaign(Path("x.tmx"), INSTANT, loader=lambda _: level)
+    campaign = Campaign(Path("x.tmx"), INSTANT, loader=lambda _: level, measure=MEASURED)
     for tick in range(20):
         campaign.tick(JUMP if tick % 4 == 0 else NOTHING)
         assert campaign.world.player.box.is_finite()
@@ -296,7 +297,7 @@ def test_a_body_flung_at_absurd_speeds_keeps_a_rect_pygame_can_hold() -> None:
 def test_a_player_spawned_inside_a_wall_is_pushed_out_to_the_nearest_free_place() -> None:
     level = level_from_ascii(["        ", "   ##   ", "   ##   ", "########"],
                              spawn=Box(66, 20, 12, 14))   # 2 px in from the block's right
-    world = World(level, INSTANT)
+    world = World(level, INSTANT, measure=MEASURED)
     assert world.player.box == Box(80, 20, 12, 14)        # out through the nearest face
     assert world.max_penetration_px == 0.0
     world.step(NOTHING)
@@ -317,7 +318,7 @@ def test_a_diagonal_move_into_an_inner_corner_ends_flush_against_both_faces() ->
     level = level_from_ascii(["P      ", "      #", "      #", "#######"],
                              spawn=Box(60, 10, 12, 14))
     world = World(level, replace(INSTANT, run_speed_px_s=3000.0, gravity_px_s2=0.0,
-                                 max_fall_speed_px_s=3000.0))
+                                 max_fall_speed_px_s=3000.0), measure=MEASURED)
     world.player.vy = 3000.0
     world.step(RIGHT)
     assert world.player.box.right == 6 * 16 and world.player.box.bottom == 3 * 16
@@ -369,3 +370,36 @@ def test_stomped_enemies_that_fade_in_the_same_tick_all_leave_the_screen() -> No
     for _ in range(3):
         world.step(NOTHING)
     assert len(world.squashed) == 0
+
+
+def test_penetration_is_measured_only_when_asked_and_then_catches_a_body_left_in_a_wall(
+        ) -> None:
+    level = level_from_ascii(["      ", "  P   ", "######"])
+    sunk = Box(32, 24, 12, 14)  # feet 6 px below the floor's top: no sweep can undo that
+    deepest: dict[str, float] = {}
+    for name, measure in (("measured", MEASURED), ("unmeasured", Measure())):
+        world = World(level, INSTANT, measure=measure)
+        world.player.teleport(sunk)
+        world.step(NOTHING)
+        deepest[name] = world.max_penetration_px
+    assert deepest["measured"] >= 6.0
+    assert deepest["unmeasured"] == 0.0  # nothing asked for it, so nothing was measured
+
+
+def test_a_run_that_writes_a_report_measures_penetration_and_one_that_does_not_skips_it(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from game.app import run as runner
+    from game.app.cli import parser
+
+    made: list[Campaign] = []
+
+    class Recorded(Campaign):
+        def __init__(self, *args: Any, **kwargs: Any) -> None:
+            super().__init__(*args, **kwargs)
+            made.append(self)
+
+    monkeypatch.setattr(runner, "Campaign", Recorded)
+    for extra in ([], ["--report", str(tmp_path / "report.json")]):
+        args = parser().parse_args(["--headless", "--ticks", "2", *extra])
+        assert runner.run(args, lambda _: 0) == runner.EXIT_OK
+    assert [c.measure.penetration for c in made] == [False, True]

@@ -37,7 +37,7 @@ from game.levels import FIRST_LEVEL, LevelError, load_level
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import NOTHING, Action, Actions, InputScript, InputScriptError, Recorder
 from game.sim.level import Level
-from game.sim.world import Event
+from game.sim.world import Event, Measure
 
 HEADLESS_TICK_LIMIT = 60 * 60 * 60  # an hour of game time: a run with no --ticks still ends
 TARGET_FPS = 60
@@ -142,7 +142,10 @@ def run(args: argparse.Namespace, play_in_window: Callable[[Run], int]) -> int:
         return load_level(path, images=needs_pictures)
 
     try:
-        campaign = Campaign(first_level, loader=loader)
+        # The report's max_penetration_px is measured only when a report is written; the
+        # overlay's query log is kept only while the overlay is on.
+        measure = Measure(penetration=args.report is not None, queries=bool(args.debug))
+        campaign = Campaign(first_level, loader=loader, measure=measure)
         game_run = Run(campaign, script, args)
         if args.headless:
             return run_headless(game_run)

@@ -144,6 +144,7 @@ def play_in_window(run: Run) -> int:
             using_pad = pad_in_use(event, using_pad)
             if event.type == pygame.KEYDOWN and event.key == pygame.K_F1:
                 debug = not debug
+                run.campaign.measure.queries = debug  # the overlay draws the tick's query log
             elif event.type == pygame.KEYDOWN and stepping.press(event.key, overlay_on=debug):
                 pass
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_F11:

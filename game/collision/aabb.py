@@ -188,14 +188,16 @@ class Box(NamedTuple):
             ...
         ValueError: cannot make a Rect from Box(x=1099511627776.0, y=0, w=1, h=1): an edge ...
         """
-        if not self.is_finite():
-            raise ValueError(f"cannot make a Rect from a non-finite box {self}")
-        edges = (math.floor(self.x), math.floor(self.y),
-                 math.floor(self.x) + math.ceil(self.w), math.floor(self.y) + math.ceil(self.h))
-        if any(not RECT_MIN <= edge <= RECT_MAX for edge in edges):
+        x, y, w, h = self
+        try:
+            left, top, width, height = math.floor(x), math.floor(y), math.ceil(w), math.ceil(h)
+        except (ValueError, OverflowError):  # NaN and infinities have no floor
+            raise ValueError(f"cannot make a Rect from a non-finite box {self}") from None
+        if not (RECT_MIN <= left <= RECT_MAX and RECT_MIN <= top <= RECT_MAX
+                and RECT_MIN <= left + width <= RECT_MAX and RECT_MIN <= top + height <= RECT_MAX):
             raise ValueError(f"cannot make a Rect from {self}: an edge lies outside "
                              f"{RECT_MIN}..{RECT_MAX}, the range a pygame Rect can hold")
-        return pygame.Rect(edges[0], edges[1], math.ceil(self.w), math.ceil(self.h))
+        return pygame.Rect(left, top, width, height)
 
 
 def rects_overlap(a: Box, b: Box) -> bool:

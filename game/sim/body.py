@@ -56,7 +56,16 @@ class Body(BoxSprite):
         Testing the path, not just the final box, means a fast body cannot skip over a coin
         or a spike in one tick: the trigger version of "sweep every move".
         """
-        moves = [m for m in (self.last_x, self.last_y) if m is not None]
-        if not moves:
+        x, y, w, h = region
+        if not (w > 0 and h > 0):
+            return False
+        right, bottom = x + w, y + h
+        last_x, last_y = self.last_x, self.last_y
+        if last_x is None and last_y is None:
             return self.box.overlaps(region)
-        return any(m.path.overlaps(region) for m in moves)
+        for move in (last_x, last_y):
+            if move is not None:
+                left, top, p_right, p_bottom = move.path_edges  # worked out once per move
+                if left < right and x < p_right and top < bottom and y < p_bottom:
+                    return True
+        return False

@@ -20,7 +20,7 @@ from game.sim.inputs import Actions
 from game.sim.level import Level
 from game.sim.movement import penetration_depth
 from game.sim.tuning import Tuning
-from game.sim.world import Event, EventKind, World
+from game.sim.world import Event, EventKind, Measure, World
 
 
 class Outcome(Enum):
@@ -62,10 +62,13 @@ class Campaign:
     """Plays levels in order from ``first_level`` until the last exit or the last life."""
 
     def __init__(self, first_level: Path, tuning: Tuning | None = None, *,
-                 loader: LevelLoader) -> None:
+                 loader: LevelLoader, measure: Measure | None = None) -> None:
         self.tuning = tuning or Tuning()
         self.loader = loader
-        self.world = World(loader(first_level), self.tuning)
+        # What every level's world writes down beyond the game (shared: turning the overlay's
+        # query log on or off reaches the level in play and every level after it).
+        self.measure = measure or Measure()
+        self.world = World(loader(first_level), self.tuning, measure=self.measure)
         self.outcome = Outcome.RUNNING
         self.ticks = 0
         self.lives = self.tuning.start_lives
@@ -124,7 +127,7 @@ class Campaign:
         if next_level is None:
             self.outcome = Outcome.WON
         else:
-            self.world = World(self.loader(next_level), self.tuning)
+            self.world = World(self.loader(next_level), self.tuning, measure=self.measure)
             self._begin_level()
 
     def reload(self, level: Level) -> None:
@@ -134,7 +137,7 @@ class Campaign:
         otherwise it starts again at the new spawn. Coins and enemies come from the new map.
         """
         old = self.world.player
-        self.world = World(level, self.tuning)
+        self.world = World(level, self.tuning, measure=self.measure)
         player = self.world.player
         if (penetration_depth(self.world.solids, old.box) == 0.0
                 and old.box.top < level.grid.height_px):
@@ -144,5 +147,5 @@ class Campaign:
 
     def restart_level(self) -> None:
         """Start the current level again from its spawn (the pause menu's Restart)."""
-        self.world = World(self.world.level, self.tuning)
+        self.world = World(self.world.level, self.tuning, measure=self.measure)
         self._begin_level()

@@ -70,10 +70,12 @@ class Enemy(Body):
         self.rest_ticks_left = tuning.hopper_rest_ticks
 
     def _ground_ahead(self, grid: Solids) -> bool:
-        box = self.box
-        front = box.right if self.direction > 0 else box.left - LEDGE_PROBE_PX
-        probe = Box(front, box.bottom, LEDGE_PROBE_PX, LEDGE_PROBE_PX)
-        return any(s.kind is not TileKind.HAZARD for s in grid.shapes_in(probe))
+        x, y, w, h = self.box
+        front = x + w if self.direction > 0 else x - LEDGE_PROBE_PX
+        feet = y + h
+        hazard = TileKind.HAZARD
+        return any(entry[4] is not hazard for entry in grid.entries_in(
+            front, feet, front + LEDGE_PROBE_PX, feet + LEDGE_PROBE_PX))
 
     def react(self, x_move: Move, y_move: Move) -> None:
         if x_move.hit is not None:

@@ -17,6 +17,10 @@ What it teaches:
   * **One-way platforms** only count when the body's bottom starts at or above their top.
   * **The ground probe** is a one-pixel strip under the feet; it reports ground only when a
     top face lies exactly at the feet, so standing still never flickers.
+  * **Plain floats, few objects.** A sweep asks the solids for the entries in its region by
+    four float edges (:meth:`TileGrid.entries_in`) and compares faces as floats; it makes
+    one :class:`Move` (and a :class:`Hit` only when something stopped it). The region swept
+    and the path travelled are worked out from the move when first asked for, and kept.
 
 >>> from game.sim.tilegrid import TileGrid, TileShape, TileKind
 >>> grid = TileGrid(cols=10, rows=4, tile_w=16, tile_h=16)
@@ -29,13 +33,16 @@ What it teaches:
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from enum import Enum
+from typing import NamedTuple
 
 from game.collision.aabb import Box
 from game.sim.tilegrid import Solids, TileKind, TileShape
 
 GROUND_PROBE_PX = 1.0  # height of the strip under the feet that looks for ground
+
+SOLID, ONE_WAY, HAZARD = TileKind.SOLID, TileKind.ONE_WAY, TileKind.HAZARD
+Edges = tuple[float, float, float, float]  # left, top, right, bottom
 
 
 class Side(Enum):
@@ -47,8 +54,7 @@ class Side(Enum):
     BOTTOM = "bottom"  # feet: a floor
 
 
-@dataclass(frozen=True)
-class Hit:
+class Hit(NamedTuple):
     """What stopped a move: the body's side, the face coordinate, and the shape.
 
     ``shape`` is None when the body stopped at the left or right edge of the map, which
@@ -60,22 +66,49 @@ class Hit:
     shape: TileShape | None
 
 
-@dataclass(frozen=True)
 class Move:
-    """The result of one axis step: where the body ended, what it hit, what was swept.
+    """The result of one axis step: where the body ended, what it hit, where it started.
 
-    ``swept`` is the region checked (old box to intended box); :attr:`path` is the region
-    actually travelled (old box to final box), which is what triggers such as coins test.
+    :attr:`swept` is the region checked (the start box to the intended box); :attr:`path` is
+    the region actually travelled (the start box to the final box), which is what triggers
+    such as coins and spikes test. Both are worked out on first use and kept, so the coins,
+    the contacts and the hazards of a tick share one path.
     """
 
-    box: Box
-    hit: Hit | None
-    swept: Box
-    start: Box
+    __slots__ = ("_path", "_swept", "box", "dx", "dy", "hit", "start")
+
+    def __init__(self, box: Box, hit: Hit | None, start: Box, dx: float = 0.0,
+                 dy: float = 0.0, swept: Box | None = None) -> None:
+        self.box = box
+        self.hit = hit
+        self.start = start
+        self.dx, self.dy = dx, dy  # the step asked for
+        self._swept = swept
+        self._path: Edges | None = None
+
+    def __repr__(self) -> str:
+        return f"Move(box={self.box}, hit={self.hit}, start={self.start})"
+
+    @property
+    def swept(self) -> Box:
+        if self._swept is None:
+            self._swept = self.start.union(self.start.moved(self.dx, self.dy))
+        return self._swept
+
+    @property
+    def path_edges(self) -> Edges:
+        """The path's left, top, right and bottom edges, as plain floats."""
+        if self._path is None:
+            x0, y0, w0, h0 = self.start
+            x1, y1, w1, h1 = self.box
+            self._path = (min(x0, x1), min(y0, y1), max(x0 + w0, x1 + w1),
+                          max(y0 + h0, y1 + h1))
+        return self._path
 
     @property
     def path(self) -> Box:
-        return self.start.union(self.box)
+        left, top, right, bottom = self.path_edges
+        return Box(left, top, right - left, bottom - top)
 
 
 def _check_step(delta: float) -> None:
@@ -87,26 +120,28 @@ def move_x(grid: Solids, box: Box, dx: float) -> Move:
     """Move ``box`` by ``dx`` along x, stopping flush at the nearest solid face or map edge."""
     _check_step(dx)
     if dx == 0:
-        return Move(box, None, box, box)
-    swept = box.union(box.moved(dx=dx))
-    hit: Hit | None = None
+        return Move(box, None, box, swept=box)
+    x, y, w, h = box
+    right = x + w
+    found: TileShape | None = None
     if dx > 0:
-        stop = box.right + dx
-        for shape in grid.shapes_in(swept):
-            face = shape.box.left
-            if shape.kind is TileKind.SOLID and box.right <= face < stop:
-                stop, hit = face, Hit(Side.RIGHT, face, shape)
-        if box.right <= grid.width_px < stop:
-            stop, hit = grid.width_px, Hit(Side.RIGHT, grid.width_px, None)
-        return Move(box._replace(x=stop - box.w), hit, swept, box)
-    stop = box.left + dx
-    for shape in grid.shapes_in(swept):
-        face = shape.box.right
-        if shape.kind is TileKind.SOLID and stop < face <= box.left:
-            stop, hit = face, Hit(Side.LEFT, face, shape)
-    if stop < 0 <= box.left:
+        stop = right + dx
+        for face, _, _, _, kind, shape in grid.entries_in(x, y, stop, y + h):
+            if kind is SOLID and right <= face < stop:
+                stop, found = face, shape
+        hit = None if found is None else Hit(Side.RIGHT, stop, found)
+        width = grid.width_px
+        if right <= width < stop:
+            stop, hit = width, Hit(Side.RIGHT, width, None)
+        return Move(Box(stop - w, y, w, h), hit, box, dx)
+    stop = x + dx
+    for _, _, face, _, kind, shape in grid.entries_in(stop, y, right, y + h):
+        if kind is SOLID and stop < face <= x:
+            stop, found = face, shape
+    hit = None if found is None else Hit(Side.LEFT, stop, found)
+    if stop < 0 <= x:
         stop, hit = 0, Hit(Side.LEFT, 0, None)
-    return Move(box._replace(x=stop), hit, swept, box)
+    return Move(Box(stop, y, w, h), hit, box, dx)
 
 
 def move_y(grid: Solids, box: Box, dy: float, *, through_one_way: bool = False) -> Move:
@@ -118,24 +153,24 @@ def move_y(grid: Solids, box: Box, dy: float, *, through_one_way: bool = False) 
     """
     _check_step(dy)
     if dy == 0:
-        return Move(box, None, box, box)
-    swept = box.union(box.moved(dy=dy))
-    hit: Hit | None = None
+        return Move(box, None, box, swept=box)
+    x, y, w, h = box
+    bottom = y + h
+    found: TileShape | None = None
     if dy > 0:
-        stop = box.bottom + dy
-        for shape in grid.shapes_in(swept):
-            face = shape.box.top
-            blocks = shape.kind is TileKind.SOLID or (
-                shape.kind is TileKind.ONE_WAY and not through_one_way)
-            if blocks and box.bottom <= face < stop:
-                stop, hit = face, Hit(Side.BOTTOM, face, shape)
-        return Move(box._replace(y=stop - box.h), hit, swept, box)
-    stop = box.top + dy
-    for shape in grid.shapes_in(swept):
-        face = shape.box.bottom
-        if shape.kind is TileKind.SOLID and stop < face <= box.top:
-            stop, hit = face, Hit(Side.TOP, face, shape)
-    return Move(box._replace(y=stop), hit, swept, box)
+        stop = bottom + dy
+        for _, face, _, _, kind, shape in grid.entries_in(x, y, x + w, stop):
+            if ((kind is SOLID or (kind is ONE_WAY and not through_one_way))
+                    and bottom <= face < stop):
+                stop, found = face, shape
+        hit = None if found is None else Hit(Side.BOTTOM, stop, found)
+        return Move(Box(x, stop - h, w, h), hit, box, 0.0, dy)
+    stop = y + dy
+    for _, _, _, face, kind, shape in grid.entries_in(x, stop, x + w, bottom):
+        if kind is SOLID and stop < face <= y:
+            stop, found = face, shape
+    hit = None if found is None else Hit(Side.TOP, stop, found)
+    return Move(Box(x, stop, w, h), hit, box, 0.0, dy)
 
 
 def slide_past_ceiling_corner(grid: Solids, box: Box, dy: float,
@@ -172,11 +207,10 @@ def slide_past_ceiling_corner(grid: Solids, box: Box, dy: float,
 def ground_under(grid: Solids, box: Box, *, through_one_way: bool = False,
                  ) -> TileShape | None:
     """The solid or one-way shape whose top lies exactly at the feet, if any (the probe)."""
-    probe = Box(box.x, box.bottom, box.w, GROUND_PROBE_PX)
-    for shape in grid.shapes_in(probe):
-        if shape.box.top != box.bottom or shape.kind is TileKind.HAZARD:
-            continue
-        if shape.kind is TileKind.ONE_WAY and through_one_way:
+    x, y, w, h = box
+    feet = y + h
+    for _, top, _, _, kind, shape in grid.entries_in(x, feet, x + w, feet + GROUND_PROBE_PX):
+        if top != feet or kind is HAZARD or (kind is ONE_WAY and through_one_way):
             continue
         return shape
     return None
@@ -184,7 +218,8 @@ def ground_under(grid: Solids, box: Box, *, through_one_way: bool = False,
 
 def touching(grid: Solids, box: Box, kind: TileKind) -> list[TileShape]:
     """The shapes of one kind that overlap the box (hazards, for instance)."""
-    return [shape for shape in grid.shapes_in(box) if shape.kind is kind]
+    x, y, w, h = box
+    return [entry[5] for entry in grid.entries_in(x, y, x + w, y + h) if entry[4] is kind]
 
 
 def penetration_depth(grid: Solids, box: Box) -> float:

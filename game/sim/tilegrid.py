@@ -1,7 +1,7 @@
 """The tile-grid lookup: find the solid shapes near a box without scanning every wall.
 
 Where it sits: built once per level by the loader; queried by :mod:`game.sim.movement` in the
-x and y passes of every tick, and by the hazard and ledge checks.
+x and y passes of every tick, and by the ground probe, the hazard and the ledge checks.
 
 What it teaches:
   * A tile map *is* a spatial partition. The cells a box covers are found by dividing its
@@ -11,6 +11,14 @@ What it teaches:
     exactly on a cell border does not reach into the next cell.
   * Indices are clamped to the map, never wrapped: Python's ``row[-1]`` is the last column,
     which is exactly the wrong answer for a body just left of the map.
+  * **Plain floats in the hot loop.** Each shape is stored once, when the level is built,
+    as an :data:`Entry`: its four edges as floats, its kind and the shape itself. A query
+    (:meth:`TileGrid.entries_in`) takes the region's four edges and compares floats; it
+    builds no boxes, no generators, and nothing per shape it rejects.
+  * **Counting and logging the work.** Every query adds what it visited to
+    :class:`QueryStats`; when a :class:`QueryLog` is attached (the debug overlay attaches
+    one), it also writes down which cells it looked in, so the overlay can show exactly
+    what was tested and nothing else.
 
 >>> grid = TileGrid(cols=4, rows=2, tile_w=16, tile_h=16)
 >>> grid.put(2, 1, TileShape(Box(32, 16, 16, 16), TileKind.SOLID))
@@ -25,10 +33,11 @@ What it teaches:
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import Enum
-from typing import Protocol
+from math import ceil, floor
+from typing import NamedTuple, Protocol
 
 from game.collision.aabb import Box
 
@@ -41,9 +50,9 @@ class TileKind(Enum):
     HAZARD = "Hazard"    # hurts on touch, blocks nothing
 
 
-@dataclass(frozen=True)
-class TileShape:
-    """One collision rectangle of one tile, in map pixels."""
+class TileShape(NamedTuple):
+    """One collision rectangle of one tile, in map pixels (a moving platform's shape has
+    ``col == -1`` and its number as ``row``)."""
 
     box: Box
     kind: TileKind
@@ -51,10 +60,35 @@ class TileShape:
     row: int = 0
 
 
+# A shape as the queries read it: left, top, right, bottom (floats), its kind, the shape.
+Entry = tuple[float, float, float, float, TileKind, TileShape]
+
+
+def entry_of(shape: TileShape) -> Entry:
+    """The plain-float form of a shape, computed once."""
+    x, y, w, h = shape.box
+    return (x, y, x + w, y + h, shape.kind, shape)
+
+
+class Mover(Protocol):
+    """A moving shape filed in the grid's second layer: it keeps its current entry."""
+
+    @property
+    def number(self) -> int: ...
+
+    @property
+    def entry(self) -> Entry: ...
+
+
+def _number(mover: Mover) -> int:
+    return mover.number
+
+
 class Solids(Protocol):
     """What the movement code needs of the world's solids: a region query and the map size.
 
-    The tile grid is one; :class:`game.sim.platforms.SolidsWithPlatforms` adds moving platforms.
+    The tile grid is one; :class:`game.sim.platforms.SolidsWithPlatforms` adds moving
+    platforms.
     """
 
     @property
@@ -63,7 +97,8 @@ class Solids(Protocol):
     @property
     def height_px(self) -> int: ...
 
-    def shapes_in(self, region: Box) -> list[TileShape]: ...
+    def entries_in(self, left: float, top: float, right: float, bottom: float,
+                   ) -> list[Entry]: ...
 
 
 @dataclass
@@ -78,16 +113,60 @@ class QueryStats:
         self.shapes_tested = 0
 
 
+class Query(NamedTuple):
+    """One lookup as the log keeps it: what asked, the block of cells visited (inclusive,
+    empty when ``first_col > last_col``), and the moving shapes tested beside the tiles."""
+
+    purpose: str
+    first_col: int
+    last_col: int
+    first_row: int
+    last_row: int
+    extra: tuple[TileShape, ...] = ()
+
+    def cells(self) -> Iterator[tuple[int, int]]:
+        for row in range(self.first_row, self.last_row + 1):
+            for col in range(self.first_col, self.last_col + 1):
+                yield col, row
+
+
+@dataclass
+class QueryLog:
+    """Every lookup made while attached, labelled with what it was for.
+
+    The world sets :attr:`purpose` before each kind of query ("x sweep", "ground probe", ...)
+    and clears :attr:`queries` at the start of a tick, so after a tick it holds exactly that
+    tick's lookups. Attached only when something will read it (the debug overlay).
+    """
+
+    purpose: str = ""
+    queries: list[Query] = field(default_factory=list)
+
+    def add(self, first_col: int, last_col: int, first_row: int, last_row: int) -> None:
+        self.queries.append(Query(self.purpose, first_col, last_col, first_row, last_row))
+
+    def add_extra(self, shapes: tuple[TileShape, ...]) -> None:
+        """Note the moving shapes the last query tested besides its tiles."""
+        if self.queries and shapes:
+            last = self.queries[-1]
+            self.queries[-1] = last._replace(extra=last.extra + shapes)
+
+
 @dataclass
 class TileGrid:
-    """Collision shapes bucketed by the tile cell they sit in."""
+    """Collision shapes bucketed by the tile cell they sit in.
+
+    Cells are keyed ``row * cols + col``; a cell with no shape has no bucket.
+    """
 
     cols: int
     rows: int
     tile_w: int
     tile_h: int
     stats: QueryStats = field(default_factory=QueryStats)
-    _cells: dict[tuple[int, int], list[TileShape]] = field(default_factory=dict)
+    log: QueryLog | None = None  # attached by whoever wants every query written down
+    _cells: dict[int, list[Entry]] = field(default_factory=dict)
+    _empty: list[tuple[int, TileShape]] = field(default_factory=list)
 
     @property
     def width_px(self) -> int:
@@ -98,19 +177,33 @@ class TileGrid:
         return self.rows * self.tile_h
 
     def put(self, col: int, row: int, shape: TileShape) -> None:
-        """Add a shape to cell ``(col, row)``; the shape must lie inside that cell."""
+        """Add a shape to cell ``(col, row)``; the shape must lie inside that cell.
+
+        A shape with no area can touch nothing, so it is kept for drawing only.
+        """
         if not (0 <= col < self.cols and 0 <= row < self.rows):
             raise IndexError(f"cell ({col}, {row}) is outside a {self.cols}x{self.rows} map")
-        self._cells.setdefault((col, row), []).append(shape)
+        key = row * self.cols + col
+        if shape.box.w > 0 and shape.box.h > 0:
+            self._cells.setdefault(key, []).append(entry_of(shape))
+        else:
+            self._empty.append((key, shape))
 
     def shapes(self) -> Iterator[TileShape]:
         """Every shape in the map (for drawing and for the brute-force comparisons)."""
         for bucket in self._cells.values():
-            yield from bucket
+            for entry in bucket:
+                yield entry[5]
+        for _, shape in self._empty:
+            yield shape
 
     def shapes_at(self, col: int, row: int) -> tuple[TileShape, ...]:
         """The shapes of one cell, read without counting (for drawing, never for physics)."""
-        return tuple(self._cells.get((col, row), ()))
+        if not (0 <= col < self.cols and 0 <= row < self.rows):
+            return ()
+        key = row * self.cols + col
+        return (*(entry[5] for entry in self._cells.get(key, ())),
+                *(shape for k, shape in self._empty if k == key))
 
     def cells_covering(self, region: Box) -> Iterator[tuple[int, int]]:
         """The in-map cells whose interior the region overlaps, row by row."""
@@ -124,36 +217,73 @@ class TileGrid:
             for col in range(first_col, last_col + 1):
                 yield col, row
 
-    def shapes_in(self, region: Box) -> list[TileShape]:
-        """The shapes whose box overlaps the region (strictly), counting the work done.
+    def entries_in(self, left: float, top: float, right: float, bottom: float,
+                   movers: Mapping[int, Sequence[Mover]] | None = None,
+                   ignoring: Mover | None = None) -> list[Entry]:
+        """The shapes that overlap the region (strictly), as entries, counting the work.
 
-        The cells of :meth:`cells_covering` and the test of :meth:`Box.overlaps`, written
-        out inline: every body calls this several times a tick, so it builds no generator,
-        makes no method call per shape and updates the counts once.
+        The cells of :meth:`cells_covering` and the test of :meth:`Box.overlaps`, on the
+        region's four edges: every body calls this several times a tick, so it takes floats,
+        makes no call per shape and updates the counts once. ``movers`` is a second layer
+        keyed like the tiles (moving platforms, filed by the cells they cover): the same
+        cells are looked up in it, each mover found is tested once, after the tiles and in
+        the order of their numbers, and ``ignoring`` is skipped.
         """
-        x, y, w, h = region
-        if not (w > 0 and h > 0):  # empty (or NaN): overlaps nothing
+        if not (right > left and bottom > top):  # empty (or NaN): overlaps nothing
             return []
-        right, bottom = x + w, y + h
-        try:
-            first_col = max(0, math.floor(x / self.tile_w))
-            last_col = min(self.cols - 1, math.ceil(right / self.tile_w) - 1)
-            first_row = max(0, math.floor(y / self.tile_h))
-            last_row = min(self.rows - 1, math.ceil(bottom / self.tile_h) - 1)
-        except (ValueError, OverflowError):  # floor() and ceil() refuse NaN and infinities
+        cols = self.cols
+        try:  # the covered cells, clamped to the map (floor() and ceil() refuse infinities)
+            first_col, last_col = floor(left / self.tile_w), ceil(right / self.tile_w) - 1
+            first_row, last_row = floor(top / self.tile_h), ceil(bottom / self.tile_h) - 1
+        except OverflowError:
             return []
-        found: list[TileShape] = []
+        if first_col < 0:
+            first_col = 0
+        if last_col >= cols:
+            last_col = cols - 1
+        if first_row < 0:
+            first_row = 0
+        if last_row >= self.rows:
+            last_row = self.rows - 1
+        log = self.log
+        if log is not None:
+            log.add(first_col, last_col, first_row, last_row)
+        found: list[Entry] = []
+        near: list[Mover] = []
         cells = self._cells
-        visited = tested = 0
+        tested = 0
         for row in range(first_row, last_row + 1):
+            key = row * cols
             for col in range(first_col, last_col + 1):
-                visited += 1
-                for shape in cells.get((col, row), ()):
-                    tested += 1
-                    sx, sy, sw, sh = shape.box
-                    if (sx < right and x < sx + sw and sy < bottom and y < sy + sh
-                            and sw > 0 and sh > 0):
-                        found.append(shape)
-        self.stats.cells_visited += visited
-        self.stats.shapes_tested += tested
+                bucket = cells.get(key + col)
+                if bucket is not None:
+                    tested += len(bucket)
+                    for entry in bucket:
+                        if (entry[0] < right and left < entry[2]
+                                and entry[1] < bottom and top < entry[3]):
+                            found.append(entry)
+                if movers is not None:
+                    for mover in movers.get(key + col, ()):
+                        if mover not in near and mover is not ignoring:
+                            near.append(mover)
+        if near:
+            if len(near) > 1:
+                near.sort(key=_number)
+            tested += len(near)
+            for mover in near:
+                entry = mover.entry
+                if (entry[0] < right and left < entry[2] and entry[1] < bottom
+                        and top < entry[3] and entry[2] > entry[0] and entry[3] > entry[1]):
+                    found.append(entry)
+            if log is not None:
+                log.add_extra(tuple(mover.entry[5] for mover in near))
+        stats = self.stats
+        if last_col >= first_col and last_row >= first_row:
+            stats.cells_visited += (last_col - first_col + 1) * (last_row - first_row + 1)
+        stats.shapes_tested += tested
         return found
+
+    def shapes_in(self, region: Box) -> list[TileShape]:
+        """The shapes whose box overlaps the region (strictly), counting the work done."""
+        x, y, w, h = region
+        return [entry[5] for entry in self.entries_in(x, y, x + w, y + h)]

@@ -22,10 +22,15 @@ comments in :meth:`World.step` and the README's tour name the same steps in the 
    platform, costs a life; the player respawns at the spawn or the last checkpoint.
 10. **Camera**: follows the player.
 
-Before step 1 a squashed enemy's time on screen counts down; after step 9 the deepest
-overlap of any body with a solid is measured for the report (it should stay 0).
+Before step 1 a squashed enemy's time on screen counts down; after step 9, when a report
+asks for it, the deepest overlap of any body with a solid is measured (it should stay 0).
 
 Solids never go through ``groupcollide``: walls only meet bodies in the movement code.
+
+Two things a tick writes down beyond the game itself only when asked (:class:`Measure`):
+the deepest overlap of any body with a solid after resolution (the report's
+``max_penetration_px``), and every lookup's purpose, cells and shapes (what the debug
+overlay draws). Neither changes what happens, and a tick nobody measures does neither.
 """
 
 from __future__ import annotations
@@ -52,12 +57,11 @@ from game.sim.movement import (
     nearest_free_place,
     penetration_depth,
     slide_past_ceiling_corner,
-    touching,
 )
 from game.sim.pickups import Checkpoint, Coin, Exit, Trigger
 from game.sim.platforms import Platform, SolidsWithPlatforms
 from game.sim.player import Player
-from game.sim.tilegrid import TileKind
+from game.sim.tilegrid import QueryLog, TileKind
 from game.sim.tuning import Tuning
 
 
@@ -103,6 +107,20 @@ class TickStats:
     collision_s: float = 0.0
 
 
+@dataclass
+class Measure:
+    """What a tick writes down beyond the game itself; both off unless something reads them.
+
+    ``penetration``: the deepest overlap of any body with a solid after resolution, kept in
+    ``World.max_penetration_px`` (the runner turns it on for ``--report``, tests for their
+    checks). ``queries``: every lookup's purpose, cells and shapes, kept in
+    ``World.query_log`` (the debug overlay turns it on).
+    """
+
+    penetration: bool = False
+    queries: bool = False
+
+
 def crossed(body: Body, thing: Trigger | Enemy) -> bool:
     """``collided=`` for pygame.sprite: did the body's path this tick overlap the thing?"""
     return body.travelled_through(thing.box)
@@ -115,6 +133,7 @@ class World:
     level: Level
     tuning: Tuning = field(default_factory=Tuning)
     camera: Camera = field(default_factory=Camera)
+    measure: Measure = field(default_factory=Measure)
 
     def __post_init__(self) -> None:
         self.tuning = self.tuning.with_map_properties(self.level.properties)
@@ -122,6 +141,7 @@ class World:
         self.platforms: pygame.sprite.Group[Platform] = pygame.sprite.Group(
             Platform(spec, number) for number, spec in enumerate(self.level.platforms))
         self.solids = SolidsWithPlatforms(self.grid, list(self.platforms))
+        self._solids_without = [self.solids.without(p) for p in self.platforms]
         self.checkpoints: pygame.sprite.Group[Checkpoint] = pygame.sprite.Group(
             Checkpoint(box) for box in self.level.checkpoints)
         self.checkpoint_reached: int | None = None
@@ -143,6 +163,7 @@ class World:
         self.contacts: ContactTracker[ContactKey] = ContactTracker()
         self.stats = TickStats()
         self.max_penetration_px = 0.0
+        self.query_log = QueryLog()  # filled only while measure.queries is on
         self.probe_ground(self.player)
         self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
 
@@ -154,17 +175,25 @@ class World:
         """Advance the level by one tick of ``tuning.tick_s`` seconds."""
         events: list[Event] = []
         dt = self.tuning.tick_s
+        solids = self.solids
         self.grid.stats.reset()
+        # The query log, when asked for: each lookup below is written down under the
+        # purpose last set here, so the overlay can show exactly what this tick tested.
+        log = self.grid.log = self.query_log if self.measure.queries else None
+        if log is not None:
+            log.queries.clear()
         started = time.perf_counter()
 
         for squash in self.squashed:  # a Group iterates over a copy: kill() inside is safe
             squash.fade()
 
         # 1. Intent: entities choose velocities; none of them moves itself.
+        if log is not None:
+            log.purpose = "ledge look-ahead"
         if self.player.decide(held, self.tuning):
             events.append(Event(EventKind.JUMP))
         for enemy in self.enemies:
-            enemy.decide(self.solids, self.tuning)
+            enemy.decide(solids, self.tuning)
         bodies = self.bodies()
         before = {body: body.box for body in bodies}
         for body in bodies:
@@ -172,17 +201,25 @@ class World:
 
         # 2. Platforms: each moves along its path, pushing what is in its way and carrying
         #    what rides it, through the same swept moves (so never into a wall).
+        if log is not None:
+            log.purpose = "platforms"
         for platform in self.platforms:
-            self._move_platform(platform, *platform.next_step(dt))
+            self._move_platform(platform, *platform.next_step(dt), bodies)
 
         # 3. x pass: move along x and stop flush at the first solid face swept.
+        if log is not None:
+            log.purpose = "x sweep"
         for body in bodies:
-            body.last_x = move_x(self.solids, body.box, body.vx * dt)
+            body.last_x = move_x(solids, body.box, body.vx * dt)
             body.place(body.last_x.box)
 
         # 4. y pass: the same along y, then probe one pixel below the feet.
         for body in bodies:
+            if log is not None:
+                log.purpose = "y sweep"
             self._move_y(body, body.vy * dt)
+            if log is not None:
+                log.purpose = "ground probe"
             self.probe_ground(body)
 
         # 5. React: each body reads what its own moves hit.
@@ -197,12 +234,16 @@ class World:
 
         # 7. Contacts: what the player touches now. The tracker reports only what changed,
         #    so entering the exit is one event however long the player stands in it.
+        if log is not None:
+            log.purpose = "hazards"
         touching_now = self._player_contacts()
         changes = self.contacts.update(touching_now)
         for kind, number in (key for pair in changes.started for key in pair):
             if kind == "exit":
                 events.append(Event(EventKind.EXIT))
             elif kind == "checkpoint":
+                if log is not None:
+                    log.purpose = "checkpoint spawn"
                 self.spawn = self._checkpoint_spawn(number)
                 self.checkpoint_reached = number
                 for flag_number, flag in enumerate(self.checkpoints):
@@ -239,19 +280,31 @@ class World:
 
         self.stats = TickStats(self.grid.stats.cells_visited, self.grid.stats.shapes_tested,
                                time.perf_counter() - started)
-        # Measurement only: how deep does any body sit in a solid after resolution?
-        for body in self.bodies():
-            self.max_penetration_px = max(self.max_penetration_px,
-                                          penetration_depth(self.solids, body.box))
+        # Measurement only, when asked: how deep does any body sit in a solid after
+        # resolution? (Its lookups are logged apart and left out of the stats above.)
+        if self.measure.penetration:
+            if log is not None:
+                log.purpose = "penetration (measurement)"
+            for body in self.bodies():
+                self.max_penetration_px = max(self.max_penetration_px,
+                                              penetration_depth(solids, body.box))
 
         # 10. Camera: follow the player, inside the map.
         self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
         return events
 
     def probe_ground(self, body: Body) -> None:
-        """The one-pixel probe under the feet: what the body stands (or rides) on, if anything."""
-        body.standing_on = ground_under(self.solids, body.box,
-                                        through_one_way=body.dropping_through)
+        """The one-pixel probe under the feet: what the body stands (or rides) on, if anything.
+
+        A y move that ended with the feet exactly on a floor has found it already: the shape
+        it hit is the one the probe would find first. So the probe only runs when it did not.
+        """
+        landed = body.last_y.hit if body.last_y is not None else None
+        if landed is not None and landed.side is Side.BOTTOM and landed.face == body.box.bottom:
+            body.standing_on = landed.shape
+        else:
+            body.standing_on = ground_under(self.solids, body.box,
+                                            through_one_way=body.dropping_through)
         body.on_ground = body.standing_on is not None
         body.riding = self.solids.platform_of(body.standing_on)
 
@@ -264,10 +317,12 @@ class World:
                   for number, flag in enumerate(self.checkpoints) if crossed(player, flag)}
         pairs |= {(PLAYER_KEY, ("enemy", number)) for number, enemy in
                   self.enemy_by_number.items() if enemy.alive() and crossed(player, enemy)}
+        cols, hazard = self.grid.cols, TileKind.HAZARD
         for move in (player.last_x, player.last_y):
             if move is not None:
-                pairs |= {(PLAYER_KEY, ("hazard", shape.row * self.grid.cols + shape.col))
-                          for shape in touching(self.grid, move.path, TileKind.HAZARD)}
+                pairs |= {(PLAYER_KEY, ("hazard", entry[5].row * cols + entry[5].col))
+                          for entry in self.grid.entries_in(*move.path_edges)
+                          if entry[4] is hazard}
         return pairs
 
     def _move_y(self, body: Body, dy: float) -> None:
@@ -279,26 +334,32 @@ class World:
             if slid is not None:
                 side, move = slid
                 run = body.last_x or side
-                body.last_x = Move(side.box, run.hit, run.swept.union(side.swept), run.start)
+                body.last_x = Move(side.box, run.hit, run.start,
+                                   swept=run.swept.union(side.swept))
         # Below the map is the void (a lost life) and far above it the sky ends, so a body
         # flung at any speed keeps coordinates that a Rect can hold.
-        y = min(max(move.box.y, -SKY_LIMIT_PX), float(self.grid.height_px))
-        if y != move.box.y:
-            move = Move(move.box._replace(y=y), move.hit, move.swept, move.start)
+        x, y, w, h = move.box
+        if not -SKY_LIMIT_PX <= y <= self.grid.height_px:
+            y = min(max(y, -SKY_LIMIT_PX), float(self.grid.height_px))
+            move = Move(Box(x, y, w, h), move.hit, move.start, move.dx, move.dy)
         body.last_y = move
         body.place(move.box)
 
-    def _move_platform(self, platform: Platform, dx: float, dy: float) -> None:
+    def _move_platform(self, platform: Platform, dx: float, dy: float,
+                       bodies: list[Body]) -> None:
         """Move a platform one axis at a time, pushing bodies in its way and carrying riders."""
-        riders = [body for body in self.bodies() if body.riding is platform]
-        others = self.solids.without(platform)
+        if dx == 0 and dy == 0:
+            return
+        riders = [body for body in bodies if body.riding is platform]
+        others = self._solids_without[platform.number]
         for step, axis in ((dx, "x"), (dy, "y")):
             if step == 0:
                 continue
             platform.place(platform.box.moved(dx=step) if axis == "x"
                            else platform.box.moved(dy=step))
+            self.solids.moved(platform)
             move = move_x if axis == "x" else move_y
-            for body in self.bodies():
+            for body in bodies:
                 if body.box.overlaps(platform.box):
                     body.place(move(others, body.box, _push_needed(platform.box, body.box,
                                                                    axis, step)).box)
