@@ -126,34 +126,39 @@ class PlatformIndex:
     grid: TileGrid
     cells: dict[int, list[Platform]] = field(default_factory=dict)
     outside: list[Platform] = field(default_factory=list)
-    _keys: dict[int, tuple[int, ...]] = field(default_factory=dict)
+    _spans: dict[int, tuple[int, int, int, int] | None] = field(default_factory=dict)
 
     def file(self, platform: Platform) -> None:
         """Put the platform in the cells of its current box (after it moved)."""
         grid = self.grid
         left, top, right, bottom = platform.entry[:4]
-        inside = left >= 0 and right <= grid.width_px and top >= 0 and bottom <= grid.height_px
-        keys: tuple[int, ...] = ()
-        if inside:
-            first_col, last_col = math.floor(left / grid.tile_w), math.ceil(right / grid.tile_w) - 1
-            first_row, last_row = math.floor(top / grid.tile_h), math.ceil(bottom / grid.tile_h) - 1
-            keys = tuple(row * grid.cols + col for row in range(first_row, last_row + 1)
-                         for col in range(first_col, last_col + 1))
-        old = self._keys.get(platform.number)
-        if old == keys and (inside or platform in self.outside):
-            return
-        for key in old or ():
+        span: tuple[int, int, int, int] | None = None  # outside the map: no cells
+        if 0 <= left and right <= grid.width_px and 0 <= top and bottom <= grid.height_px:
+            span = (math.floor(left / grid.tile_w), math.ceil(right / grid.tile_w) - 1,
+                    math.floor(top / grid.tile_h), math.ceil(bottom / grid.tile_h) - 1)
+        number = platform.number
+        if number in self._spans and self._spans[number] == span:
+            return  # still in the same cells: nothing to refile
+        for key in _keys(self._spans.get(number), grid.cols):
             self.cells[key].remove(platform)
         if platform in self.outside:
             self.outside.remove(platform)
-        for key in keys:
+        for key in _keys(span, grid.cols):
             here = self.cells.setdefault(key, [])
             here.append(platform)
             here.sort(key=_number)
-        if not inside:
+        if span is None:
             self.outside.append(platform)
             self.outside.sort(key=_number)
-        self._keys[platform.number] = keys
+        self._spans[number] = span
+
+
+def _keys(span: tuple[int, int, int, int] | None, cols: int) -> list[int]:
+    if span is None:
+        return []
+    first_col, last_col, first_row, last_row = span
+    return [row * cols + col for row in range(first_row, last_row + 1)
+            for col in range(first_col, last_col + 1)]
 
 
 def _number(platform: Platform) -> int:

@@ -76,11 +76,12 @@ def anchored_box(box: Box, size: tuple[int, int], anchor: Anchor) -> Box:
     Box(x=12.0, y=22.0, w=8, h=8)
     """
     w, h = size
+    x, y, box_w, box_h = box  # plain floats: every body is placed twice a tick
     if anchor is Anchor.TOP_LEFT:
-        return Box(box.x, box.y, w, h)
-    x = box.x + (box.w - w) / 2
-    y = box.bottom - h if anchor is Anchor.BOTTOM_CENTRE else box.y + (box.h - h) / 2
-    return Box(x, y, w, h)
+        return Box(x, y, w, h)
+    left = x + (box_w - w) / 2
+    top = y + box_h - h if anchor is Anchor.BOTTOM_CENTRE else y + (box_h - h) / 2
+    return Box(left, top, w, h)
 
 
 @dataclass(frozen=True)

@@ -138,6 +138,7 @@ class World:
     def __post_init__(self) -> None:
         self.tuning = self.tuning.with_map_properties(self.level.properties)
         self.grid = self.level.grid
+        self.map_w_px, self.map_h_px = self.grid.width_px, self.grid.height_px
         self.platforms: pygame.sprite.Group[Platform] = pygame.sprite.Group(
             Platform(spec, number) for number, spec in enumerate(self.level.platforms))
         self.solids = SolidsWithPlatforms(self.grid, list(self.platforms))
@@ -211,13 +212,14 @@ class World:
             log.purpose = "x sweep"
         for body in bodies:
             body.last_x = move_x(solids, body.box, body.vx * dt)
-            body.place(body.last_x.box)
 
-        # 4. y pass: the same along y, then probe one pixel below the feet.
+        # 4. y pass: the same along y from where the x pass stopped; the body is placed (its
+        #    rect derived, once a tick) and the probe looks one pixel below the feet.
         for body in bodies:
             if log is not None:
                 log.purpose = "y sweep"
-            self._move_y(body, body.vy * dt)
+            assert body.last_x is not None
+            self._move_y(body, body.last_x.box, body.vy * dt)
             if log is not None:
                 log.purpose = "ground probe"
             self.probe_ground(body)
@@ -269,10 +271,10 @@ class World:
 
         # 9. The void and the crush: falling below the map, or being pushed into a wall by a
         #    platform, costs a life (and removes an enemy).
-        if self.player.box.top >= self.grid.height_px or self.player.crushed:
+        if self.player.box.y >= self.map_h_px or self.player.crushed:
             hurt = True
         for enemy in self.enemies:
-            if enemy.box.top >= self.grid.height_px or enemy.crushed:
+            if enemy.box.y >= self.map_h_px or enemy.crushed:
                 enemy.kill()
         if hurt and not any(e.kind is EventKind.EXIT for e in events):
             events.append(Event(EventKind.HURT, 1, self.player.box))
@@ -290,7 +292,7 @@ class World:
                                               penetration_depth(solids, body.box))
 
         # 10. Camera: follow the player, inside the map.
-        self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
+        self.camera.follow(self.player.box, self.map_w_px, self.map_h_px)
         return events
 
     def probe_ground(self, body: Body) -> None:
@@ -306,7 +308,8 @@ class World:
             body.standing_on = ground_under(self.solids, body.box,
                                             through_one_way=body.dropping_through)
         body.on_ground = body.standing_on is not None
-        body.riding = self.solids.platform_of(body.standing_on)
+        body.riding = (None if body.standing_on is None or body.standing_on.col != -1
+                       else self.solids.platform_of(body.standing_on))
 
     def _player_contacts(self) -> set[tuple[ContactKey, ContactKey]]:
         """The pairs (player, thing) whose boxes the player's path overlapped this tick."""
@@ -325,12 +328,12 @@ class World:
                           if entry[4] is hazard}
         return pairs
 
-    def _move_y(self, body: Body, dy: float) -> None:
-        """The y pass for one body, with corner correction for a rise that clips a ceiling."""
-        move = move_y(self.solids, body.box, dy, through_one_way=body.dropping_through)
+    def _move_y(self, body: Body, box: Box, dy: float) -> None:
+        """The y pass for one body from ``box`` (where its x move ended), with corner
+        correction for a rise that clips a ceiling; then the body is placed."""
+        move = move_y(self.solids, box, dy, through_one_way=body.dropping_through)
         if move.hit is not None and move.hit.side is Side.TOP and body.corner_correction_px:
-            slid = slide_past_ceiling_corner(self.solids, body.box, dy,
-                                             body.corner_correction_px)
+            slid = slide_past_ceiling_corner(self.solids, box, dy, body.corner_correction_px)
             if slid is not None:
                 side, move = slid
                 run = body.last_x or side
@@ -339,8 +342,8 @@ class World:
         # Below the map is the void (a lost life) and far above it the sky ends, so a body
         # flung at any speed keeps coordinates that a Rect can hold.
         x, y, w, h = move.box
-        if not -SKY_LIMIT_PX <= y <= self.grid.height_px:
-            y = min(max(y, -SKY_LIMIT_PX), float(self.grid.height_px))
+        if not -SKY_LIMIT_PX <= y <= self.map_h_px:
+            y = min(max(y, -SKY_LIMIT_PX), float(self.map_h_px))
             move = Move(Box(x, y, w, h), move.hit, move.start, move.dx, move.dy)
         body.last_y = move
         body.place(move.box)
@@ -359,8 +362,12 @@ class World:
                            else platform.box.moved(dy=step))
             self.solids.moved(platform)
             move = move_x if axis == "x" else move_y
+            left, top, right, bottom = platform.entry[:4]
+            solid = right > left and bottom > top
             for body in bodies:
-                if body.box.overlaps(platform.box):
+                x, y, w, h = body.box
+                if (solid and w > 0 and h > 0 and x < right and left < x + w and y < bottom
+                        and top < y + h):
                     body.place(move(others, body.box, _push_needed(platform.box, body.box,
                                                                    axis, step)).box)
                     body.crushed = body.box.overlaps(platform.box)
