@@ -133,7 +133,7 @@ class PlatformIndex:
         grid = self.grid
         left, top, right, bottom = platform.entry[:4]
         span: tuple[int, int, int, int] | None = None  # outside the map: no cells
-        if 0 <= left and right <= grid.width_px and 0 <= top and bottom <= grid.height_px:
+        if left >= 0 and right <= grid.width_px and top >= 0 and bottom <= grid.height_px:
             span = (math.floor(left / grid.tile_w), math.ceil(right / grid.tile_w) - 1,
                     math.floor(top / grid.tile_h), math.ceil(bottom / grid.tile_h) - 1)
         number = platform.number
