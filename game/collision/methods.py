@@ -9,9 +9,11 @@ the benchmark result that set it (``python -m game.bench``, committed in ``asset
 What it teaches: **model no more than a scene needs.** A spatial structure costs code and
 bookkeeping on every move; it only pays once there are enough things to pair up. The level's
 walls are already a grid (the tile map), so bodies ask :class:`~game.sim.tilegrid.TileGrid`;
-the handful of coins and enemies go through ``pygame.sprite.groupcollide``; only a crowd of
-movers (the crate demo, a bullet-hell scene) needs a broad phase, and below the crossover
-plain brute force is both simpler and faster.
+the few dozen things a player can touch are tested one by one against the path it swept
+(coins through ``pygame.sprite.groupcollide``; see :meth:`game.sim.world.World.step`). The
+game makes those choices in that code, once, and reads nothing here. Only a crowd of movers
+(the crate demo, the stress scene, the lab's crowds) needs a broad phase, and asks this
+module which; below the crossover plain brute force is both simpler and faster.
 
 >>> choose_broad_phase(5), choose_broad_phase(5_000)
 ('brute_force', 'grid')
@@ -33,17 +35,6 @@ WALLS: Final = "tile_grid"
 committed run the lookup took 1.00x as long on an 800x160 map as on a 200x40 one, and was
 42.0x faster than ``spritecollide`` over all 2,413 walls of the 200x40 map
 (``assets/charts/walls.csv``, ``assets/charts/targets.csv``)."""
-
-TRIGGERS: Final = "groupcollide"
-"""Coins, exits and enemies are found with ``pygame.sprite.groupcollide`` against the player's
-path: one player against a few dozen things is a few dozen C calls. Even ``groupcollide(G, G)``
-over *all* pairs stays inside 2 ms up to N = 150 in the committed run
-(``assets/charts/broad_phase.csv``)."""
-
-MOVES: Final = "swept"
-"""Moves are swept, never checked only at their end: a discrete check misses a 16 px wall
-from 1.75 tiles per tick (T + S = 28 px) and 70.8 % of flights at 6 tiles per tick in the
-committed run, while the swept test misses none (``assets/charts/tunnelling.csv``)."""
 
 BROAD_PHASE_CROSSOVER_N: Final = 10
 """The grid beats brute force (every pair tested in Python) from N = 10 movers up in the
