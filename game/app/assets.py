@@ -28,10 +28,10 @@ ASSETS = Path(__file__).resolve().parents[2] / "assets"
 SPRITE_PX = 16  # player and enemy frames are 16x16
 COIN_PX = 8  # coin frames are 8x8
 
-# Text sizes for pygame's bundled default font, chosen to stay crisp on the 320x180 screen.
-SMALL_FONT_PT = 14  # debug overlay and fine print: about 9 px tall (crisp without antialias)
-FONT_PT = 16  # HUD and menus: about 11 px tall
-BIG_FONT_PT = 32  # titles: about 22 px tall
+# The game's own pixel font (game.tools.pixel_font), drawn at 1x: 7 px capitals, 2 px
+# descenders. The title font is the same drawing with every pixel doubled.
+FONT_FILE, FONT_PX = "font.bdf", 9  # the height each is drawn at: ascent and descent
+BIG_FONT_FILE, BIG_FONT_PX = "font-big.bdf", 18
 
 
 @dataclass(frozen=True)
@@ -79,6 +79,16 @@ def _image(name: str) -> pygame.Surface:
                            ) from None
 
 
+def _font(name: str, size_px: int) -> pygame.font.Font:
+    """Load the bitmap font ``assets/<name>`` at the one size it is drawn in."""
+    path = ASSETS / name
+    try:
+        return pygame.font.Font(str(path), size_px)
+    except (pygame.error, FileNotFoundError, OSError) as error:
+        raise RuntimeError(f"cannot load {path}: {error} (regenerate with "
+                           "python -m game.tools.art)") from None
+
+
 def load_assets() -> Assets:
     """Load every image and font.
 
@@ -94,7 +104,7 @@ def load_assets() -> Assets:
         exit_image=_image("exit.png"),
         background=_image("background.png"),
         heart=_image("heart.png"),
-        font=pygame.font.Font(None, FONT_PT),
-        big_font=pygame.font.Font(None, BIG_FONT_PT),
-        small_font=pygame.font.Font(None, SMALL_FONT_PT),
+        font=_font(FONT_FILE, FONT_PX),
+        big_font=_font(BIG_FONT_FILE, BIG_FONT_PX),
+        small_font=_font(FONT_FILE, FONT_PX),
     )

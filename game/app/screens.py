@@ -9,11 +9,11 @@ What it teaches:
   * **Dimming what is underneath** with one multiplying fill (``BLEND_RGB_MULT``): the game
     stays visible, paused, behind the menu, and no extra surface is needed.
   * **Layout from the screen's size.** Everything is placed relative to the target's centre
-    and edges, so nothing here assumes 320x180 except the font sizes.
+    and edges and the fonts' own sizes, so nothing here assumes 320x180.
   * **A menu is data.** :data:`game.app.menus.TITLE_ITEMS` and :data:`game.app.menus.PAUSE_ITEMS`
     are the lists the menu logic and this drawing code both index with ``selected``, and
     one function (:func:`draw_menu`) draws every list of choices the same way.
-  * **Draw an icon rather than hope for a glyph.** pygame's default font has no padlock,
+  * **Draw an icon rather than hope for a glyph.** The game's pixel font has no padlock,
     so :func:`draw_lock` draws one from a rectangle and an arc.
 """
 
@@ -383,7 +383,7 @@ def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign, hea
         ("Deaths", str(campaign.deaths)),
     )
     font = assets.font
-    line_h = font.get_linesize()
+    line_h = font.get_linesize() + LINE_GAP_PX
     heading_h = assets.big_font.get_linesize()
     text_w = max(font.size(label)[0] + font.size(value)[0] for label, value in lines)
     panel_w = max(text_w + COLUMN_GAP_PX, assets.big_font.size(heading)[0]) + 4 * PANEL_PAD_PX

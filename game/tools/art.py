@@ -28,6 +28,8 @@ from pathlib import Path
 
 import pygame
 
+from game.tools.pixel_font import write_fonts
+
 ASSETS = Path(__file__).resolve().parents[2] / "assets"
 
 RGB = tuple[int, int, int]
@@ -1288,7 +1290,9 @@ def main() -> None:
             raise RuntimeError(f"{name} is {surface.get_size()}, expected {size}")
         pygame.image.save(surface, str(ASSETS / name))
     (ASSETS / "tiles.tsx").write_text(tileset_tsx(), encoding="utf-8")
-    print(f"wrote {len(IMAGES) + 1} files to {ASSETS} (the credits are in assets/README.md)")
+    fonts = write_fonts(ASSETS)
+    print(f"wrote {len(IMAGES) + 1 + len(fonts)} files to {ASSETS} "
+          "(the credits are in assets/README.md)")
 
 
 if __name__ == "__main__":
