@@ -1,8 +1,9 @@
 """The heads-up display: lives, coins, score and the level's title along the top of the screen.
 
-Where it sits: drawn after :func:`game.app.render.draw_world` each frame, in screen space (the
-camera does not move it). It reads the :class:`~game.sim.campaign.Campaign` and changes nothing.
-It also holds the small text helpers the menus and the debug overlay share.
+Where it sits: drawn after the world (:meth:`game.app.render.WorldRenderer.draw`) each frame,
+in screen space (the camera does not move it). It reads the
+:class:`~game.sim.campaign.Campaign` and changes nothing. It also holds the small text helpers
+the menus and the debug overlay share.
 
 What it teaches:
   * **Screen space versus world space.** The world is drawn through the camera; the HUD is

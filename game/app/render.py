@@ -56,7 +56,7 @@ SKY_PARALLAX = 0.25  # the sky moves this fraction of a pixel per pixel the came
 DEFAULT_SKY_COLOR = (110, 170, 240)  # behind the sky picture, if a level does not set one
 
 CHUNK_PX = 256  # a cached piece of a tile layer is this many pixels square
-MAX_CACHED_CHUNKS = 96  # at 256 KiB a chunk, at most 24 MiB of cached tiles
+MAX_CACHED_CHUNKS = 96  # per layer: at 256 KiB a chunk, at most 24 MiB of its tiles
 
 PLANK_COLOR = (150, 98, 52)
 PLANK_TOP_COLOR = (204, 150, 84)

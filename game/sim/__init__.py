@@ -3,6 +3,8 @@
 One tick reads top to bottom in :meth:`game.sim.world.World.step`; the swept x and y passes
 are in :mod:`~game.sim.movement`, against the tile grid of :mod:`~game.sim.tilegrid`. Bodies,
 the player, enemies, pickups and platforms are entities that set velocities; only movement
-changes positions. :mod:`~game.sim.campaign` plays levels in order; it is given a loader, so
+changes positions. Each of them is a sprite (:mod:`~game.sim.sprite`) whose drawn ``rect``
+follows its float box; the app only hands it pictures. :mod:`~game.sim.campaign` plays
+levels in order; it is given a loader, so
 the simulation never imports the Tiled loader or the app above it.
 """

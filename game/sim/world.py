@@ -1,8 +1,9 @@
 """One level in play, and the tick that advances it by 1/60 s.
 
 Where it sits: the middle of the game. :meth:`World.step` is the whole update, in order,
-in one function; the campaign (:mod:`game.sim.campaign`) calls it once per tick and the
-renderer (:mod:`game.app.render`) only reads what it leaves behind.
+in one function; the campaign (:mod:`game.sim.campaign`) calls it once per tick. The
+renderer (:mod:`game.app.render`) reads what it leaves behind and changes nothing of it but
+the sprites' pictures (each sprite's ``update``).
 
 The order of a tick (``tests/test_tick_order.py`` checks that this list, the numbered
 comments in :meth:`World.step` and the README's tour name the same steps in the same order):
