@@ -252,6 +252,23 @@ def test_overlap_dragged_flush_against_the_wall_reads_touching_not_colliding() -
     assert scene.player().w == 0
     assert scene.status()[0] == f"Collision status: {collision_status(scene.player(), WALL)}"
     assert scene.status()[0] == "Collision status: apart"
+    key(bed, pygame.K_z)
+    wall = scene.wall()  # now drag the wall off the player: flush on its other side
+    shift = scene.player().left - wall.right
+    drag(bed, wall.center, (wall.center[0] + shift, wall.center[1]))
+    assert scene.wall().right == scene.player().left
+    assert scene.status()[0] == "Collision status: touching"
+
+
+def test_the_window_opens_a_scene_and_closes_on_quit() -> None:
+    from game.lab.cli import window
+
+    pygame.display.quit()  # the window is made afresh, as by a reader's first run
+    pygame.display.init()
+    pygame.event.post(pygame.event.Event(pygame.QUIT))
+    assert window("overlap") == 0
+    assert not pygame.display.get_init()  # it closed behind itself
+    pygame.display.init()
 
 
 def test_screen_grid_floors_a_negative_position_where_int_would_not() -> None:

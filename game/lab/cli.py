@@ -108,5 +108,5 @@ def window(scene: str | None) -> int:
         bed.draw(display)
         pygame.display.flip()
         clock.tick(WINDOW_FPS)
-    pygame.quit()
+    pygame.display.quit()
     return 0

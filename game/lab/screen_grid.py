@@ -78,7 +78,8 @@ class ScreenGrid(Scene):
             for row in range(-6, 7):
                 y = oy + row * CELL_PX
                 pygame.draw.line(surface, canvas.GRID, (AREA.left, y), (AREA.right, y))
-                canvas.text(surface, str(row * CELL_PX), (AREA.left + 2, y + 2), canvas.DIM, 16)
+                if y > AREA.top + 16:  # below the row of x labels
+                    canvas.text(surface, str(row * CELL_PX), (AREA.left + 2, y + 2), canvas.DIM, 16)
             cell = Box(ox + self.cell[0] * CELL_PX, oy + self.cell[1] * CELL_PX, CELL_PX, CELL_PX)
             canvas.wash(surface, cell, canvas.TESTED)
         canvas.arrow(surface, (ox, oy), (ox + 120, oy), canvas.TEXT)
