@@ -31,6 +31,15 @@ HOVER_REACH_PX = 60.0  # the nearest body this close to the mouse counts as hove
 CROWD_AREA = Box(AREA.x + 8, AREA.y + 8, AREA.w - 16, AREA.h - 16)
 
 
+def plural(count: int, noun: str) -> str:
+    """``1 cell``, ``4 cells``.
+
+    >>> plural(1, "cell"), plural(4, "cell")
+    ('1 cell', '4 cells')
+    """
+    return f"{count} {noun}" if count == 1 else f"{count} {noun}s"
+
+
 class PartyGrid(CrowdScene):
     name = "party-grid"
     title = "the party grid: only bodies sharing a cell are tested"
@@ -91,8 +100,8 @@ class PartyGrid(CrowdScene):
         self.query_tests = self.grid.stats.pair_tests
         self.query_cells = self.grid.stats.cells_visited
         self.lines += [
-            f"body {self.hovered}: filed in {len(self.hover_cells)} cells",
-            f"  its query visits {self.query_cells} cells and",
+            f"body {self.hovered}: filed in {plural(len(self.hover_cells), 'cell')}",
+            f"  its query visits {plural(self.query_cells, 'cell')} and",
             f"  tests {self.query_tests} bodies (itself too),",
             f"  not all {n}; overlapping it: {len(found)}",
         ]
