@@ -2,6 +2,8 @@
 
 Where it sits: under every scene's ``draw``; it only draws and never decides anything.
 
+Text is drawn in the game's own pixel font, unsmoothed, so it stays crisp at any whole scale.
+
 What it teaches: one colour per role, the same in every scene, so a reader learns the code
 once: red is the thing you move, blue the thing it meets, yellow a bounding box (the cheap
 answer), green "the exact test says yes", orange "the cheap test is wrong here", purple what
@@ -15,6 +17,7 @@ from collections.abc import Sequence
 
 import pygame
 
+from game.app.assets import ASSETS, BIG_FONT_FILE, BIG_FONT_PX, FONT_FILE, FONT_PX
 from game.collision.aabb import Box
 
 Color = tuple[int, int, int]
@@ -32,25 +35,37 @@ WRONG: Color = (245, 150, 50)     # where the cheap answer is wrong
 TESTED: Color = (170, 110, 230)   # what was tested: cells, pairs, positions
 WHITE: Color = (255, 255, 255)
 
-TEXT_PT = 20
+TEXT_PT = 20   # a size asked for; see :func:`font` for what draws it
 TITLE_PT = 28
+BIG_FROM_PT = 24  # sizes from this up get the big font
+LINE_GAP_PX = 4   # between rows of text
 
-_fonts: dict[int, pygame.font.Font] = {}
+_fonts: dict[bool, pygame.font.Font] = {}
 
 
 def font(size_pt: int = TEXT_PT) -> pygame.font.Font:
-    """pygame's bundled font at this size, made once."""
-    if size_pt not in _fonts:
+    """The game's own pixel font (``assets/font.bdf``, or ``font-big.bdf`` for titles), made
+    once; pygame's bundled font if those files cannot be read."""
+    big = size_pt >= BIG_FROM_PT
+    if big not in _fonts:
         if not pygame.font.get_init():
             pygame.font.init()
-        _fonts[size_pt] = pygame.font.Font(None, size_pt)
-    return _fonts[size_pt]
+        name, size_px = (BIG_FONT_FILE, BIG_FONT_PX) if big else (FONT_FILE, FONT_PX)
+        try:
+            _fonts[big] = pygame.font.Font(str(ASSETS / name), size_px)
+        except (pygame.error, OSError):
+            _fonts[big] = pygame.font.Font(None, size_pt)
+    return _fonts[big]
+
+
+def line_height(size_pt: int = TEXT_PT) -> int:
+    return font(size_pt).get_linesize() + LINE_GAP_PX
 
 
 def text(surface: pygame.Surface, words: str, at: tuple[int, int], color: Color = TEXT,
          size_pt: int = TEXT_PT) -> pygame.Rect:
     """Draw one line with its top-left at ``at``; returns where it went."""
-    image = font(size_pt).render(words, True, color)
+    image = font(size_pt).render(words, False, color)
     return surface.blit(image, at)
 
 
@@ -58,7 +73,7 @@ def lines(surface: pygame.Surface, rows: Sequence[str], at: tuple[int, int],
           color: Color = TEXT, size_pt: int = TEXT_PT) -> int:
     """Draw lines top to bottom; returns the y below the last one."""
     x, y = at
-    step = font(size_pt).get_linesize()
+    step = line_height(size_pt)
     for row in rows:
         text(surface, row, (x, y), color, size_pt)
         y += step

@@ -151,7 +151,7 @@ class Lab:
         layer_rows = [f"{n} {'on ' if layer in self.layers else 'off'} {layer.value}"
                       for n, layer in enumerate(Layer, start=1)]
         canvas.lines(surface, ["layers:", *layer_rows],
-                     (PANEL.x, max(bottom + 8, PANEL.bottom - 6 * canvas.font().get_linesize())),
+                     (PANEL.x, max(bottom + 8, PANEL.bottom - 6 * canvas.line_height())),
                      canvas.DIM)
         canvas.text(surface, f"{scene.keys_help}  |  {COMMON_HELP}", (8, LAB_H_PX - 24),
                     canvas.DIM)
@@ -162,8 +162,8 @@ class Lab:
         for row, scene in enumerate(self.scenes):
             y = MENU_TOP_PX + row * MENU_ROW_PX
             color = canvas.BOUNDS if row == self.choice else canvas.TEXT
-            canvas.text(surface, f"{scene.name:16s}", (40, y), color)
-            canvas.text(surface, scene.title, (230, y), color if row == self.choice
+            canvas.text(surface, scene.name, (40, y), color, canvas.TITLE_PT)
+            canvas.text(surface, scene.title, (250, y + 4), color if row == self.choice
                         else canvas.DIM)
         canvas.text(surface, "Up/Down and Enter, or click: open a scene  |  Esc: quit",
                     (24, LAB_H_PX - 24), canvas.DIM)
