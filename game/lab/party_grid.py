@@ -7,6 +7,8 @@ What it shows: seventy bodies drifting (pause with P, then hover at leisure), fi
 sharing those cells, the only neighbours its query tests, are outlined in white; the panel
 prints that query's counts from the grid's own
 :class:`~game.collision.broad.brute_force.BroadPhaseStats`.
+(This grid files a body under every cell its box covers, so a query needs only those cells,
+not the ring of eight neighbours a grid that files each body under one cell must check.)
 For the whole crowd it sets the grid's pair tests against brute force's n(n-1)/2, checks both
 found the same pairs, and times both per frame and per test.
 """
@@ -104,6 +106,9 @@ class PartyGrid(CrowdScene):
             f"  its query visits {plural(self.query_cells, 'cell')} and",
             f"  tests {self.query_tests} bodies (itself too),",
             f"  not all {n}; overlapping it: {len(found)}",
+            "a body is filed under every cell it",
+            "covers, so no ring of neighbour cells",
+            "is needed: sharing a cell is enough",
         ]
 
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:

@@ -1,13 +1,14 @@
 """Scene ``polygons``: convex polygons by the separating axis theorem, axis by axis.
 
 What it shows: a red pentagon and a blue triangle you can drag. Every edge brings an axis
-(:meth:`~game.collision.sat.Polygon.axes`); Tab walks through them and draws both shadows on
-the chosen one (:meth:`~game.collision.sat.Polygon.project`), drawn through the middle of the
-area. The panel names the first axis whose shadows do not overlap, the separating axis, when
-there is one; when there is not, :func:`~game.collision.sat.collide` returns the push-out
-(minimum translation vector), drawn as a green arrow, and M applies it: afterwards the shapes
-touch, give or take float rounding (the panel then shows the depth that rounding left, a
-tiny fraction of a pixel).
+(:meth:`~game.collision.sat.Polygon.axes`), drawn as a short numbered arrow on the edge. One
+axis at a time is drawn as a long line beside the shapes, with both shadows on it
+(:meth:`~game.collision.sat.Polygon.project`): the separating axis while there is one, or the
+axis Tab picks. The panel names the first axis whose shadows do not overlap, the separating
+axis, when there is one; when there is not, :func:`~game.collision.sat.collide` returns the
+push-out (minimum translation vector), drawn as a green arrow, and M applies it: afterwards the
+shapes touch, give or take float rounding (the panel then shows the depth that rounding left,
+a tiny fraction of a pixel).
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ TRIANGLE = ((0.0, -60.0), (70.0, 50.0), (-70.0, 50.0))
 AREA_CENTRE = (AREA.centerx, AREA.centery)
 LINE_AWAY_PX = 170.0  # the axis is drawn this far to one side of the shapes
 SHADOW_OFFSET_PX = 5.0
+AXIS_ARROW_PX = 18.0  # length of the drawn edge normals
 
 
 def line_centre(axis: Point, middle: Point) -> Point:
@@ -126,6 +128,19 @@ class Polygons(Scene):
                 pygame.draw.line(surface, color, start, end, 5)
             canvas.text(surface, f"axis #{index + 1}", (round(through[0]), round(through[1])),
                         line_color)
+        if Layer.PAIRS in layers:  # every candidate axis: the normal of each edge, numbered
+            number = 0
+            for shape in (a, b):
+                points = shape.points
+                for i, (nx, ny) in enumerate(shape.axes()):
+                    (x1, y1), (x2, y2) = points[i], points[(i + 1) % len(points)]
+                    mid = ((x1 + x2) / 2, (y1 + y2) / 2)
+                    tip = (mid[0] + nx * AXIS_ARROW_PX, mid[1] + ny * AXIS_ARROW_PX)
+                    number += 1
+                    color = canvas.EXACT if number - 1 == self.separating else canvas.DIM
+                    canvas.arrow(surface, mid, tip, color, 1)
+                    canvas.text(surface, str(number), (round(tip[0]) + 2, round(tip[1]) - 4),
+                                color, 16)
         if Layer.CONTACTS in layers and self.mtv is not None:
             cx, cy = self.pos["a"]
             dx, dy = self.mtv.vector
