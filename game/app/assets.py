@@ -42,7 +42,8 @@ class Assets:
     enemy_frames: list[pygame.Surface]  # 0-1 walk, 2 squashed, 3-4 hopper; facing right
     coin_frames: list[pygame.Surface]  # spin: face, narrow, edge, narrow
     exit_image: pygame.Surface  # 16x32 flag, its pole's foot at the bottom centre
-    background: pygame.Surface  # 320x180, opaque, tiles horizontally
+    sky: pygame.Surface  # 320x180, opaque: the sky and its one sun, drawn still
+    background: pygame.Surface  # 320x180 clouds and hills over clear sky; tiles horizontally
     heart: pygame.Surface  # 8x8 HUD life
     font: pygame.font.Font  # HUD and menu text
     big_font: pygame.font.Font  # titles
@@ -102,6 +103,7 @@ def load_assets() -> Assets:
         enemy_frames=strip(_image("enemy.png"), SPRITE_PX, SPRITE_PX),
         coin_frames=strip(_image("coin.png"), COIN_PX, COIN_PX),
         exit_image=_image("exit.png"),
+        sky=_image("sky.png"),
         background=_image("background.png"),
         heart=_image("heart.png"),
         font=_font(FONT_FILE, FONT_PX),

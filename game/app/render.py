@@ -6,12 +6,16 @@ Where it sits: after the frame's ticks, before the HUD. A :class:`WorldRenderer`
 
 A frame, in order (:meth:`WorldRenderer.draw`):
 
-1. **Sky**: the level's colour, then the sky picture, scrolled by parallax.
+1. **Sky**: the level's colour, the still sky with its sun, then the clouds and hills,
+   scrolled by parallax.
 2. **Tile layers behind the sprites**, each from its cache of pre-drawn chunks.
 3. **Sprites**: every sprite's ``update(frame)`` picks its picture, then one
    :class:`CameraGroup` blits each ``image`` at its ``rect`` minus the camera, in the
    layer order of :class:`Layer` (platforms, flags, coins, enemies, squashed, player).
 4. **Foreground tile layers**, cached the same way, so the player walks *behind* a bush.
+
+In the window, the :mod:`game.app.effects` it is given squash or stretch the player's picture
+before step 3, add their particles after it and shake the frame at the end.
 
 What it teaches:
   * **World space to screen space** is one subtraction. The camera's position is floored
@@ -43,6 +47,7 @@ from typing import TYPE_CHECKING
 import pygame
 
 from game.app.assets import Assets
+from game.app.effects import Effects
 from game.sim.camera import Camera
 from game.sim.enemy import Enemy, Squashed
 from game.sim.level import Level, TileLayer
@@ -267,10 +272,11 @@ class WorldRenderer:
         self.exit_strip = Strip.of([assets.exit_image])
         self.checkpoint_strip = Strip.of([greyed(assets.exit_image), assets.exit_image])
         self.plank_strips: dict[tuple[int, int], Strip] = {}
-        sky = assets.background  # an opaque sky hides the level's colour: no need to fill
+        sky = assets.sky  # an opaque sky hides the level's colour: no need to fill
         opaque_px = pygame.mask.from_surface(sky, OPAQUE - 1).count()
         self.sky_covers = opaque_px == sky.get_width() * sky.get_height()
         self.world: World | None = None
+        self.effects: Effects | None = None  # the window's dust, squash and shake, if any
         self.sprites = CameraGroup()
         self.back: list[LayerCache] = []
         self.front: list[LayerCache] = []
@@ -291,10 +297,16 @@ class WorldRenderer:
         # 3. Sprites: new ones get their pictures, each picks its frame, the group draws.
         self._cast_new_sprites(world)
         self.sprites.update(frame)
+        if self.effects is not None:
+            self.effects.dress(world)
         self.sprites.draw_through(target, offset)
+        if self.effects is not None:
+            self.effects.draw(target, offset)
         # 4. Foreground tile layers.
         for cache in self.front:
             cache.draw(target, offset)
+        if self.effects is not None:
+            self.effects.shake(target)
 
     def _begin(self, world: World) -> None:
         """A new world (a level started, restarted or reloaded): fresh group and caches."""
@@ -333,16 +345,20 @@ class WorldRenderer:
         raise TypeError(f"no pictures for a {type(sprite).__name__}")
 
     def _draw_sky(self, target: pygame.Surface, world: World) -> None:
-        sky = self.assets.background
+        """The sky and its one sun stand still (they are far away); the clouds and hills
+        in front of them scroll by parallax and repeat."""
+        sky = self.assets.sky
         if not self.sky_covers or sky.get_height() < target.get_height():
             color = parse_tiled_color(world.level.background_color)
             target.fill(color if color is not None else DEFAULT_SKY_COLOR)
-        sky_w = sky.get_width()
+        target.blit(sky, (0, 0))
+        scenery = self.assets.background
+        scenery_w = scenery.get_width()
         scroll = math.floor(world.camera.x * SKY_PARALLAX)
-        x = -(scroll % sky_w)
+        x = -(scroll % scenery_w)
         while x < target.get_width():
-            target.blit(sky, (x, 0))
-            x += sky_w
+            target.blit(scenery, (x, 0))
+            x += scenery_w
 
 
 def draw_world(target: pygame.Surface, world: World, assets: Assets, frame: int) -> None:

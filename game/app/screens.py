@@ -146,13 +146,14 @@ def draw_menu(target: pygame.Surface, font: pygame.font.Font, items: Sequence[st
 
 
 def _draw_sky(target: pygame.Surface, assets: Assets, frame: int) -> None:
-    """The sky picture, drifting slowly left and repeating."""
-    sky = assets.background
+    """The still sky and its sun, and the clouds and hills drifting slowly left, repeating."""
+    target.blit(assets.sky, (0, 0))
+    scenery = assets.background
     seconds = frame / ANIMATION_HZ
-    x = -(math.floor(seconds * TITLE_SKY_SCROLL_PX_S) % sky.get_width())
+    x = -(math.floor(seconds * TITLE_SKY_SCROLL_PX_S) % scenery.get_width())
     while x < target.get_width():
-        target.blit(sky, (x, 0))
-        x += sky.get_width()
+        target.blit(scenery, (x, 0))
+        x += scenery.get_width()
 
 
 def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int,

@@ -102,6 +102,7 @@ class Settings:
     effects_volume: float = DEFAULT_EFFECTS_VOLUME
     music_volume: float = DEFAULT_MUSIC_VOLUME
     fullscreen: bool = DEFAULT_FULLSCREEN
+    screen_shake: bool = True  # a stomp shakes the picture (game.app.effects); false: never
     keys: dict[str, list[str]] = field(default_factory=_default_keys)  # action -> key names
     buttons: dict[str, list[int]] = field(default_factory=_default_buttons)  # action -> numbers
 
@@ -122,6 +123,7 @@ class Settings:
     def to_json(self) -> dict[str, Any]:
         return {"version": SETTINGS_VERSION, "effects_volume": self.effects_volume,
                 "music_volume": self.music_volume, "fullscreen": self.fullscreen,
+                "screen_shake": self.screen_shake,
                 "keys": self.keys, "buttons": self.buttons}
 
     @classmethod
@@ -139,12 +141,14 @@ class Settings:
                 else:
                     problems.append(f"{name} is {json.dumps(value)}, not a number from 0 to 1 "
                                     f"(using {getattr(settings, name)})")
-        if "fullscreen" in data:
-            if isinstance(data["fullscreen"], bool):
-                settings.fullscreen = data["fullscreen"]
+        for name in ("fullscreen", "screen_shake"):
+            if name not in data:
+                continue
+            if isinstance(data[name], bool):
+                setattr(settings, name, data[name])
             else:
-                problems.append(f"fullscreen is {json.dumps(data['fullscreen'])}, not true or "
-                                f"false (using {json.dumps(settings.fullscreen)})")
+                problems.append(f"{name} is {json.dumps(data[name])}, not true or false "
+                                f"(using {json.dumps(getattr(settings, name))})")
         if "keys" in data:  # every action needs a key: the keyboard is always there
             _read_bindings(data["keys"], "keys", settings.keys, _key_name_or_none,
                            "key name pygame knows", False, problems)

@@ -28,6 +28,7 @@ from pygame._sdl2.video import WINDOWPOS_CENTERED, Window
 from game.app.assets import Assets, load_assets
 from game.app.audio import Audio
 from game.app.banner import Banner
+from game.app.effects import Effects
 from game.app.frame import render_frame
 from game.app.gamepad import Gamepads, StickEdges, pad_in_use, pad_nav
 from game.app.menus import (
@@ -120,6 +121,7 @@ def play_in_window(run: Run) -> int:
         progress, progress_problem = progress_store.load(Progress.from_json, Progress)
         notice = settings_problem or progress_problem
     keys, buttons = settings.key_codes(), settings.button_numbers()
+    effects = renderer.effects = Effects(shake_on=settings.screen_shake)
     window = Window.from_display_module()  # held while the window is open (see fit_window)
     fit_window(window)
     if settings.fullscreen:
@@ -192,11 +194,13 @@ def play_in_window(run: Run) -> int:
         # 2. Ticks: as many fixed 1/60 s steps as real time has paid for, each with what the
         # keyboard and the pads hold; each tick's events sound, and a finished level is saved.
         if menus.screen is Screen.PLAYING:
+            effects.advance(frame_s)  # effects age while playing, and stand still in menus
             for _ in range(stepping.ticks_due(stepper, frame_s, overlay_on=debug)):
                 attempt.before_tick(run.campaign)
                 finishing = run.campaign.world
                 try:
                     events = run.tick(held_over.filter(held_keys(keys) | pads.held(buttons)))
+                    effects.observe(finishing, events)
                 except LevelError as error:  # the next level will not load: say so, go back
                     menus, notice = Menus(), str(error)
                     break

@@ -1245,12 +1245,20 @@ def draw_background_cloud(surface: pygame.Surface, x: int, y: int) -> None:
         surface.blit(cloud, (x + dx, y))
 
 
-def draw_background() -> pygame.Surface:
-    """Return the opaque 320x180 parallax backdrop: sky, clouds, two hill ranges."""
+def draw_sky_picture() -> pygame.Surface:
+    """Return the opaque 320x180 sky: the dithered gradient and the one sun. The game draws
+    it still, behind the scrolling clouds and hills, so the sun never repeats."""
     surface = pygame.Surface((BACKGROUND_WIDTH, BACKGROUND_HEIGHT))
     draw_sky(surface)
     pygame.draw.circle(surface, SKY_HORIZON, SUN_CENTRE, SUN_RADIUS + 3)
     pygame.draw.circle(surface, SUN, SUN_CENTRE, SUN_RADIUS)
+    return surface
+
+
+def draw_background() -> pygame.Surface:
+    """Return the 320x180 parallax scenery over clear sky: clouds and two hill ranges. Every
+    part wraps round at the edges, so copies side by side show no seam."""
+    surface = new_surface(BACKGROUND_WIDTH, BACKGROUND_HEIGHT)
     for x, y in BACKGROUND_CLOUDS:
         draw_background_cloud(surface, x, y)
     draw_hills(surface, 112, ((2, 14, 0.3), (5, 6, 1.7), (9, 2, 0.4)), (HILL_FAR_LIGHT, HILL_FAR))
@@ -1277,6 +1285,7 @@ IMAGES: dict[str, tuple[Callable[[], pygame.Surface], tuple[int, int]]] = {
     "coin.png": (draw_coin, (COIN_SIZE * COIN_FRAME_COUNT, COIN_SIZE)),
     "exit.png": (draw_exit, (EXIT_WIDTH, EXIT_HEIGHT)),
     "heart.png": (draw_heart, (HEART_SIZE, HEART_SIZE)),
+    "sky.png": (draw_sky_picture, (BACKGROUND_WIDTH, BACKGROUND_HEIGHT)),
     "background.png": (draw_background, (BACKGROUND_WIDTH, BACKGROUND_HEIGHT)),
 }
 

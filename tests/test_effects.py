@@ -1,0 +1,112 @@
+"""Dust, squash and stretch, shake and pops: they answer events and change nothing in play."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pygame
+import pytest
+
+from game.app.assets import load_assets
+from game.app.effects import SHAKE_S, SQUASH, STRETCH, Effects
+from game.app.render import WorldRenderer
+from game.levels import FIRST_LEVEL, load_level
+from game.sim.campaign import Campaign
+from game.sim.inputs import InputScript
+from game.sim.tuning import TICK_S
+from game.sim.world import EventKind
+
+SCRIPT = Path(__file__).resolve().parent / "scripts" / f"{FIRST_LEVEL.stem}.txt"
+TICKS = 700  # far into the first level: jumps, landings, coins and both stomps
+
+
+@pytest.fixture
+def screen() -> pygame.Surface:
+    pygame.display.init()
+    return pygame.display.set_mode((320, 180))
+
+
+def play(effects: Effects | None, screen: pygame.Surface | None = None
+         ) -> tuple[Campaign, dict[EventKind, int]]:
+    """The first level's winning script for :data:`TICKS` ticks, drawn every tick if asked."""
+    script = InputScript.load(SCRIPT)
+    campaign = Campaign(FIRST_LEVEL, loader=lambda p: load_level(p, images=screen is not None))
+    renderer = None
+    if screen is not None:
+        renderer = WorldRenderer(load_assets())
+        renderer.effects = effects
+    seen: dict[EventKind, int] = {}
+    for _ in range(TICKS):
+        world = campaign.world
+        events = campaign.tick(script.held_at(campaign.ticks))
+        for event in events:
+            seen[event.kind] = seen.get(event.kind, 0) + 1
+        if effects is not None:
+            effects.observe(world, events)
+            effects.advance(TICK_S)
+        if renderer is not None and screen is not None:
+            renderer.draw(screen, campaign.world, campaign.ticks)
+    return campaign, seen
+
+
+def test_effects_change_nothing_in_play(screen: pygame.Surface) -> None:
+    plain, plain_events = play(None)
+    juicy, juicy_events = play(Effects(), screen)
+    assert juicy_events == plain_events
+    assert juicy.world.player.box == plain.world.player.box
+    assert (juicy.world.player.vx, juicy.world.player.vy) == (plain.world.player.vx,
+                                                              plain.world.player.vy)
+    assert (juicy.score, juicy.lives, juicy.ticks) == (plain.score, plain.lives, plain.ticks)
+
+
+def test_each_event_leaves_its_effect() -> None:
+    script = InputScript.load(SCRIPT)
+    campaign = Campaign(FIRST_LEVEL, loader=load_level)
+    effects = Effects()
+    answered = set()
+    for _ in range(TICKS):
+        world = campaign.world
+        events = campaign.tick(script.held_at(campaign.ticks))
+        effects.observe(world, events)
+        kinds = {event.kind for event in events}
+        if EventKind.JUMP in kinds:
+            assert effects.squash == STRETCH and effects.particles
+            answered.add("jump")
+        if EventKind.STOMP in kinds:
+            assert effects.shake_left_s == SHAKE_S and len(effects.particles) >= 10
+            answered.add("stomp")
+        if EventKind.COIN in kinds:
+            assert effects.pops
+            answered.add("coin")
+        if effects.squash == SQUASH and effects.squash_left_s > 0:
+            answered.add("landing")
+        effects.advance(TICK_S)
+    assert answered == {"jump", "stomp", "coin", "landing"}
+    effects.advance(1.0)
+    assert not effects.particles and not effects.pops and effects.scale_now() == (1.0, 1.0)
+
+
+def test_a_squashed_picture_keeps_its_feet_on_the_box(screen: pygame.Surface) -> None:
+    campaign = Campaign(FIRST_LEVEL, loader=lambda p: load_level(p, images=True))
+    renderer = WorldRenderer(load_assets())
+    renderer.draw(screen, campaign.world, 0)
+    player = campaign.world.player
+    plain = player.rect.copy()
+    effects = renderer.effects = Effects()
+    effects.observe(campaign.world, [])
+    effects._start_squash(SQUASH)
+    box = player.box
+    renderer.draw(screen, campaign.world, 0)
+    assert player.box == box
+    assert player.rect.w > plain.w and player.rect.h < plain.h
+    assert player.rect.bottom == plain.bottom and abs(player.rect.centerx - plain.centerx) <= 1
+
+
+@pytest.mark.parametrize("shake_on", [True, False])
+def test_the_shake_moves_the_picture_only_when_turned_on(screen: pygame.Surface,
+                                                         shake_on: bool) -> None:
+    screen.fill((0, 0, 0))
+    screen.fill((255, 255, 255), (100, 100, 1, 1))
+    effects = Effects(shake_on=shake_on, shake_left_s=SHAKE_S)
+    effects.shake(screen)
+    assert (screen.get_at((100, 100)) == pygame.Color(255, 255, 255)) is not shake_on

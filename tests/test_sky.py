@@ -1,0 +1,49 @@
+"""The backdrop: one sun that stands still, and clouds and hills that scroll without a seam."""
+
+from __future__ import annotations
+
+import pygame
+import pytest
+
+from game.app.assets import load_assets
+from game.app.screens import draw_title
+from game.tools import art
+
+
+@pytest.fixture
+def screen() -> pygame.Surface:
+    pygame.display.init()
+    return pygame.display.set_mode((320, 180))
+
+
+def sun_pixels(surface: pygame.Surface) -> list[tuple[int, int]]:
+    mask = pygame.mask.from_threshold(surface, art.SUN, (1, 1, 1, 255))
+    return [(x, y) for x in range(mask.get_size()[0]) for y in range(mask.get_size()[1])
+            if mask.get_at((x, y))]
+
+
+def test_the_title_shows_one_sun_that_stays_put_however_far_the_hills_drift(
+        screen: pygame.Surface) -> None:
+    assets = load_assets()
+    assert sun_pixels(assets.background) == []
+    (cx, cy), radius = art.SUN_CENTRE, art.SUN_RADIUS
+    for frame in range(0, 60 * 40, 37):  # 40 s of drift: more than one whole lap
+        draw_title(screen, assets, frame, 0, ())
+        sun = sun_pixels(screen)
+        assert sun, "clouds and titles may pass in front of the sun, never hide it all"
+        assert all((x - cx) ** 2 + (y - cy) ** 2 <= (radius + 1) ** 2 for x, y in sun), frame
+
+
+def test_the_scenery_joins_its_own_copy_without_a_step() -> None:
+    scenery = art.draw_background()
+    width, height = scenery.get_size()
+
+    def skyline(x: int) -> list[int]:
+        """For each alpha-opaque run, where the scenery starts in column ``x``."""
+        return [y for y in range(height) if scenery.get_at((x, y)).a == 255
+                and (y == 0 or scenery.get_at((x, y - 1)).a < 255)]
+
+    for x in range(width):
+        here, there = skyline(x), skyline((x + 1) % width)
+        assert here and there
+        assert abs(here[-1] - there[-1]) <= 3, f"the hills jump between columns {x} and {x + 1}"
