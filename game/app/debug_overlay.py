@@ -1,21 +1,29 @@
-"""The F1 debug overlay: hitboxes, the tiles each body is checked against, and this tick's sweeps.
+"""The F1 debug overlay: hitboxes, the cells and shapes the last tick tested, and its sweeps.
 
 Where it sits: drawn last in a frame, over the world and the HUD, when the player presses F1.
-It draws from what the last tick *recorded* (each body's ``last_x``/``last_y`` moves and
-``world.stats``) and changes nothing: it never calls :meth:`TileGrid.shapes_in`, whose work
-counters the stats are read from, and never moves a sprite.
+It draws from what the last tick *recorded* (each body's ``last_x``/``last_y`` moves, the
+world's query log and ``world.stats``) and changes nothing: it never calls
+:meth:`TileGrid.shapes_in`, whose work counters the stats are read from, and never moves a
+sprite. While the overlay is on, the tick keeps the query log (:class:`game.sim.world.Measure`):
+every lookup writes down what asked for it and the block of cells it visited.
 
 What it teaches (read the colours):
   * **Hitboxes are not sprites.** The 1 px outlines are the float boxes the physics uses
     (player green, enemies red, coins yellow, exits and checkpoints cyan, moving
     platforms pink); the art around them is decoration.
-  * **Broad phase.** The outlined tile shapes are the ones in the cells around each body:
-    Solid grey, OneWay orange, Hazard magenta. Only these are ever tested; the rest of the
-    map costs nothing.
+  * **Broad phase.** Every cell a lookup visited in the last tick is washed, with one square
+    inside it for each kind of lookup that visited it, in the colour of what asked
+    (:data:`CELL_COLORS`: an enemy's ledge look-ahead gold, a platform's push or carry pink,
+    the x sweep blue, the y sweep purple, the ground probe white, the hazard check red), and
+    every shape those lookups tested is outlined (Solid grey, OneWay orange, Hazard
+    magenta, a moving platform pink). Nothing else was tested: the rest of the map cost
+    nothing. A fast fall washes its whole swept column; a body at rest only the cells its
+    sweeps and probes touched (a y move that lands on the floor has found the ground, so
+    no probe runs after it).
   * **Swept moves.** Each body moved along x (the blue sweep) and then along y (the purple
     sweep); a red bar marks the face a sweep stopped at. Standing still, you still see a
     thin purple sweep hitting the floor every tick: gravity pulls, the floor stops it.
-  * **The cost.** "checks: N shapes in M cells" is what the whole tick's lookups did.
+  * **The cost.** "N shapes in M cells" is what the whole tick's lookups did.
 """
 
 from __future__ import annotations
@@ -33,7 +41,7 @@ from game.collision.aabb import Box
 from game.collision.contacts import Change, ContactEvent
 from game.sim.camera import Camera
 from game.sim.movement import Move, Side
-from game.sim.tilegrid import TileGrid, TileKind
+from game.sim.tilegrid import QueryLog, TileGrid, TileKind, TileShape
 from game.sim.world import PLAYER_KEY, ContactKey, World
 
 PLAYER_COLOR: Color = (80, 255, 96)
@@ -56,7 +64,20 @@ HIT_EDGE_COLOR: Color = (0, 0, 0)  # a dark rim so the bar shows on light tiles 
 HIT_MARK_PX = 2  # the hit-face bar is this thick, straddling the face
 HIT_EDGE_PX = 1
 
-NEAR_CELLS = 1  # shapes this many cells around a body are shown as "checked"
+# Each visited cell gets a faint wash, and one square per kind of lookup that visited it, in
+# the colour of what asked, nested so that no kind hides another (the purposes World.step
+# writes, in the order of the tick; the first square is the outermost).
+CELL_WASH: Color = (255, 255, 255, 50)
+CELL_COLORS: dict[str, Color] = {
+    "ledge look-ahead": (255, 200, 0),
+    "platforms": (255, 120, 200),
+    "x sweep": (60, 120, 255),
+    "y sweep": (180, 70, 255),
+    "ground probe": (255, 255, 255),
+    "hazards": (255, 60, 60),
+}
+OTHER_CELL_COLOR: Color = (160, 160, 160)  # any other lookup (a checkpoint's spawn)
+CELL_SQUARE_STEP_PX = 2  # how much each square sits inside the one before
 
 PANEL_COLOR: Color = (0, 0, 0, 160)
 PANEL_TEXT: Color = (230, 236, 255)
@@ -99,31 +120,57 @@ class Wash:
         target.blit(layer, area.topleft)
 
 
-def _near_cells(grid: TileGrid, boxes: list[Box]) -> set[tuple[int, int]]:
-    cells: set[tuple[int, int]] = set()
-    pad_x, pad_y = NEAR_CELLS * grid.tile_w, NEAR_CELLS * grid.tile_h
-    for box in boxes:
-        around = Box(box.x - pad_x, box.y - pad_y, box.w + 2 * pad_x, box.h + 2 * pad_y)
-        cells.update(grid.cells_covering(around))
-    return cells
+class Checked:
+    """What the last tick's lookups tested, read from its query log: the cells each kind of
+    lookup visited, and every shape tested (the tiles in those cells, the platforms beside)."""
+
+    def __init__(self, grid: TileGrid, log: QueryLog) -> None:
+        self.cells: dict[str, set[tuple[int, int]]] = {}
+        self.shapes: dict[TileShape, None] = {}  # in the order first tested, each once
+        for query in log.queries:
+            visited = self.cells.setdefault(query.purpose, set())
+            for cell in query.cells():
+                visited.add(cell)
+                for shape in grid.shapes_at(*cell):
+                    if shape.box.w > 0 and shape.box.h > 0:  # the lookups skip empty shapes
+                        self.shapes.setdefault(shape)
+            for shape in query.extra:
+                self.shapes.setdefault(shape)
+
+    def all_cells(self) -> set[tuple[int, int]]:
+        return set().union(*self.cells.values())
 
 
-def _draw_checked_shapes(wash: Wash, world: World) -> list[tuple[Color, pygame.Rect]]:
-    """Wash the tile shapes in the cells around each body and return their outlines to draw
-    (read-only: the cells are read through ``shapes_at``, never ``shapes_in``)."""
+Outline = tuple[Color, pygame.Rect]
+
+
+def _draw_tested(wash: Wash, world: World) -> tuple[list[Outline], list[Outline]]:
+    """Wash every cell the last tick's lookups visited; return a square for each such cell
+    and the outline of every shape they tested (read-only: cells are read through
+    ``shapes_at``, never ``shapes_in``)."""
     grid, camera = world.grid, world.camera
-    view = camera.view()
-    boxes = [body.box for body in world.bodies() if body.box.is_finite()]
-    cells = _near_cells(grid, [box for box in boxes if box.overlaps(view)])
-    outlines: list[tuple[Color, pygame.Rect]] = []
-    if not cells:
-        return outlines
-    for shape in (s for cell in sorted(cells) for s in grid.shapes_at(*cell)):
+    tested = Checked(grid, world.query_log)
+    squares: list[Outline] = []
+    order = [*CELL_COLORS, *(p for p in tested.cells if p not in CELL_COLORS)]
+    inset: dict[tuple[int, int], int] = {}
+    for purpose in order:
+        color = CELL_COLORS.get(purpose, OTHER_CELL_COLOR)
+        for col, row in sorted(tested.cells.get(purpose, ())):
+            cell = _screen_rect(Box(col * grid.tile_w, row * grid.tile_h, grid.tile_w,
+                                    grid.tile_h), camera)
+            if (col, row) not in inset:
+                wash.fill(CELL_WASH, cell)
+            step = inset[col, row] = inset.get((col, row), 0) + CELL_SQUARE_STEP_PX
+            square = cell.inflate(-step, -step)
+            if square.w > 0 and square.h > 0:
+                squares.append((color, square))
+    outlines: list[Outline] = []
+    for shape in tested.shapes:
+        color = PLATFORM_COLOR if shape.col == -1 else SHAPE_COLORS[shape.kind]
         rect = _screen_rect(shape.box, camera)
-        color = SHAPE_COLORS[shape.kind]
         wash.fill((*color[:3], SHAPE_FILL_ALPHA), rect)
         outlines.append((color, rect))
-    return outlines
+    return squares, outlines
 
 
 def _draw_sweep(wash: Wash, move: Move | None, color: Color,
@@ -179,6 +226,8 @@ def _draw_panel(target: pygame.Surface, world: World, assets: Assets, fps: float
         f"FPS {fps:4.1f}  tick {update_ms:4.2f} ms",
         f"collide {stats.collision_s * MS_PER_S:4.2f} ms",
         f"{stats.shapes_tested} shapes in {stats.cells_visited} cells",
+        (f"{len(world.query_log.queries)} lookups, all drawn" if world.measure.queries
+         else "lookups not recorded"),
         f"x {player.box.x:.1f} y {player.box.y:.1f} {ground}",
         f"vx {player.vx:.0f} vy {player.vy:.0f}",
         "walls: tile grid + sweeps",
@@ -222,7 +271,7 @@ def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float,
     """
     camera = world.camera
     wash = Wash()  # translucent fills go here
-    outlines = _draw_checked_shapes(wash, world)
+    squares, outlines = _draw_tested(wash, world)
     bars: list[pygame.Rect] = []
     for body in world.bodies():
         for move, color in ((body.last_x, SWEEP_X_COLOR), (body.last_y, SWEEP_Y_COLOR)):
@@ -230,6 +279,8 @@ def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float,
             if bar is not None:
                 bars.append(bar)
     wash.blend_onto(target)
+    for color, rect in squares:  # one square inside each cell a lookup visited
+        pygame.draw.rect(target, color, rect, width=1)
     for color, rect in outlines:
         rim = rect.inflate(-2 * SHAPE_RIM_INSET_PX, -2 * SHAPE_RIM_INSET_PX)
         pygame.draw.rect(target, SHAPE_RIM_COLOR, rim, width=1)

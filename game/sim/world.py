@@ -182,8 +182,8 @@ class World:
         # The query log, when asked for: each lookup below is written down under the
         # purpose last set here, so the overlay can show exactly what this tick tested.
         log = self.grid.log = self.query_log if self.measure.queries else None
-        if log is not None:
-            log.queries.clear()
+        if log is not None or self.query_log.queries:  # never leave an old tick's log behind
+            self.query_log.queries.clear()
         started = time.perf_counter()
 
         for squash in self.squashed:  # a Group iterates over a copy: kill() inside is safe

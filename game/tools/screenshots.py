@@ -19,18 +19,20 @@ SHOTS = ROOT / "assets" / "screenshots"
 
 @dataclass(frozen=True)
 class Shot:
-    """One picture: which level, how far into its winning script, overlay or not."""
+    """One picture: which level, how far into its winning script (or with no input at all,
+    for a showcase map that has none), overlay or not."""
 
     name: str
     level: str
     ticks: int
     debug: bool
+    scripted: bool = True
 
     def command(self) -> list[str]:
         stem = Path(self.level).stem
-        args = [sys.executable, "-m", "game", "--headless", "--level", self.level,
-                "--inputs", f"tests/scripts/{stem}.txt", "--ticks", str(self.ticks),
-                "--screenshot", f"assets/screenshots/{self.name}.png"]
+        inputs = ["--inputs", f"tests/scripts/{stem}.txt"] if self.scripted else []
+        args = [sys.executable, "-m", "game", "--headless", "--level", self.level, *inputs,
+                "--ticks", str(self.ticks), "--screenshot", f"assets/screenshots/{self.name}.png"]
         return [*args, "--debug"] if self.debug else args
 
 
@@ -39,6 +41,7 @@ SHOTS_TO_TAKE = (
     Shot("debug-overlay", "levels/01-first-steps.tmx", 200, debug=True),
     Shot("debug-stomp", "levels/01-first-steps.tmx", 312, debug=True),
     Shot("moving-parts", "levels/04-moving-parts.tmx", 1157, debug=True),
+    Shot("debug-fast-fall", "levels/showcase/fast-fall.tmx", 1, debug=True, scripted=False),
 )
 
 

@@ -1,0 +1,113 @@
+"""The debug overlay draws only the truth: the cells each lookup of the last tick visited and
+the shapes it tested, read from the tick's query log, and nothing else."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import pygame
+import pytest
+
+from game.app.assets import Assets, load_assets
+from game.app.debug_overlay import Checked, draw_debug
+from game.app.render import screen_offset
+from game.collision.aabb import Box
+from game.sim.inputs import NOTHING
+from game.sim.tuning import Tuning
+from game.sim.world import Measure, World
+from tests.maps import TILE, level_from_ascii
+
+FALL_PX_PER_TICK = 10 * TILE
+BLACK = pygame.Color(0, 0, 0)
+
+# A shaft 40 tiles deep at the right of a wide map, so the panel (top left) covers none of it.
+SHAFT = ["#" * 24 + ".P." + "#" * 3, *(["#" * 24 + "..." + "#" * 3] * 38), "#" * 30]
+FLOOR = ["            ", "            ", "        P   ", "############"]
+
+
+@pytest.fixture(scope="module")
+def assets() -> Iterator[Assets]:
+    pygame.display.init()
+    pygame.display.set_mode((320, 180))
+    yield load_assets()
+    pygame.display.quit()
+
+
+def overlay_alone(world: World, assets: Assets) -> pygame.Surface:
+    """The overlay drawn on black, so every pixel that is not black is the overlay's."""
+    target = pygame.Surface((320, 180))
+    target.fill(BLACK)
+    draw_debug(target, world, assets, fps=60.0, update_ms=0.0)
+    return target
+
+
+def cell_corner_on_screen(world: World, col: int, row: int) -> tuple[int, int]:
+    dx, dy = screen_offset(world.camera)
+    return col * TILE - dx, row * TILE - dy
+
+
+def test_a_body_falling_10_tiles_per_tick_shows_every_cell_its_sweep_covered(
+        assets: Assets) -> None:
+    fast = Tuning(gravity_px_s2=FALL_PX_PER_TICK * 60 * 60,
+                  max_fall_speed_px_s=FALL_PX_PER_TICK * 60)
+    world = World(level_from_ascii(SHAFT), fast, measure=Measure(queries=True))
+    world.step(NOTHING)
+    fall = world.player.last_y
+    assert fall is not None and fall.hit is None
+    assert fall.box.y - fall.start.y == FALL_PX_PER_TICK
+    swept = set(world.grid.cells_covering(fall.swept))
+    assert len({row for _, row in swept}) >= 10            # a column of at least 10 cells
+    tested = Checked(world.grid, world.query_log)
+    assert tested.cells["y sweep"] == swept                # every cell the sweep covered
+    # ... and each of them is washed on screen, the ones in view at least.
+    picture = overlay_alone(world, assets)
+    shown = 0
+    for col, row in sorted(swept):
+        x, y = cell_corner_on_screen(world, col, row)
+        if 0 <= x < 320 and 0 <= y + TILE // 2 < 180:
+            assert picture.get_at((x, y + TILE // 2)) != BLACK, (col, row)
+            shown += 1
+    assert shown >= 5
+
+
+def test_a_body_at_rest_shows_only_what_its_sweeps_and_probe_touched(assets: Assets) -> None:
+    world = World(level_from_ascii(FLOOR), measure=Measure(queries=True))
+    for _ in range(30):
+        world.step(NOTHING)
+    player = world.player
+    assert player.on_ground and player.vx == 0
+    world.step(NOTHING)
+    # What the player's own lookups could have touched, worked out from its moves alone:
+    # no x sweep (it did not move along x), the y sweep that landed it where it stands, and
+    # the probe only if that sweep did not already find the floor under the feet.
+    assert player.last_x is not None and player.last_y is not None
+    expected = set(world.grid.cells_covering(player.last_y.swept))
+    hit = player.last_y.hit
+    if hit is None or hit.face != player.box.bottom:
+        probe = Box(player.box.x, player.box.bottom, player.box.w, 1)
+        expected |= set(world.grid.cells_covering(probe))
+    tested = Checked(world.grid, world.query_log)
+    assert "x sweep" not in tested.cells
+    assert tested.all_cells() == expected
+    assert set(tested.shapes) == {s for cell in expected for s in world.grid.shapes_at(*cell)}
+    # The ring of cells around the body that the old overlay washed is not drawn.
+    col, row = int(player.box.x // TILE), int(player.box.y // TILE)
+    ring = {(c, r) for c in range(col - 1, col + 2) for r in range(row - 1, row + 3)}
+    untested = ring - expected
+    assert untested
+    picture = overlay_alone(world, assets)
+    hitbox = player.box.to_rect().move(*(-v for v in screen_offset(world.camera)))
+    for cell in sorted(untested):
+        x, y = cell_corner_on_screen(world, *cell)
+        inside = pygame.Rect(x + 1, y + 1, TILE - 2, TILE - 2)
+        for px in range(inside.left, inside.right):
+            for py in range(inside.top, inside.bottom):
+                if not hitbox.inflate(2, 2).collidepoint(px, py):
+                    assert picture.get_at((px, py)) == BLACK, (cell, px, py)
+
+
+def test_without_the_query_log_the_overlay_washes_no_cell(assets: Assets) -> None:
+    world = World(level_from_ascii(FLOOR))
+    world.step(NOTHING)
+    assert world.query_log.queries == []
+    assert Checked(world.grid, world.query_log).all_cells() == set()
