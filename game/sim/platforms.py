@@ -28,6 +28,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 
+import pygame
+
 from game.collision.aabb import Box
 from game.sim.sprite import Anchor, BoxSprite
 from game.sim.tilegrid import Entry, TileGrid, TileKind, TileShape, entry_of
@@ -84,23 +86,70 @@ class PlatformSpec:
 
 
 class Platform(BoxSprite):
-    """A moving solid. ``box`` is exact; its picture fills the box (its hitbox is its look)."""
+    """A moving solid. Its place is a function of the distance it has travelled along its
+    route, ``travelled_px``; ``box`` (exact), ``rect``, ``shape`` and ``entry`` follow it.
+
+    A platform no body is near need not be moved each tick: the world only advances its
+    distance (:meth:`advance`), and the box (with its rect, shape and entry) is brought to
+    where that distance puts it the next time anything reads it, so no reader ever sees it
+    lag. A level pays each tick for the platforms near a body, not for every platform.
+    """
 
     anchor = Anchor.TOP_LEFT
+    travelled_px = 0.0  # how far along its route it has gone
+    _placed_px = 0.0    # the distance its box was last placed for
 
     def __init__(self, spec: PlatformSpec, number: int) -> None:
         x, y = spec.path.point_at(0.0)
-        super().__init__(Box(x, y, spec.width_px, spec.height_px))
         self.spec = spec
         self.number = number
-        self.travelled_px = 0.0
+        super().__init__(Box(x, y, spec.width_px, spec.height_px))
         self._follow_box()
+        self.region = route_region(spec)
 
-    def next_step(self, dt_s: float) -> tuple[float, float]:
-        """The (dx, dy) this platform moves in the coming tick."""
+    @property
+    def box(self) -> Box:
+        if self._placed_px != self.travelled_px:  # moved on while nobody looked: catch up
+            self._placed_px = self.travelled_px
+            x, y = self.spec.path.point_at(self.travelled_px)
+            self.place(Box(x, y, self.spec.width_px, self.spec.height_px))
+        return self._box
+
+    @box.setter
+    def box(self, box: Box) -> None:
+        self._box = box
+
+    @property
+    def rect(self) -> pygame.Rect:
+        self.box  # noqa: B018  (the rect follows the box, even one read late)
+        return self._rect
+
+    @rect.setter
+    def rect(self, rect: pygame.Rect) -> None:
+        self._rect = rect
+
+    @property
+    def entry(self) -> Entry:
+        """The box as plain floats, for the tile grid's queries (up to date when read)."""
+        self.box  # noqa: B018  (reading the box brings it up to date)
+        return self._entry
+
+    @property
+    def shape(self) -> TileShape:
+        self.box  # noqa: B018
+        return self._entry[5]
+
+    def advance(self, dt_s: float) -> None:
+        """Travel on for one tick without moving the box (nothing is near enough to care)."""
         self.travelled_px += self.spec.speed_px_s * dt_s
-        x, y = self.spec.path.point_at(self.travelled_px)
-        return x - self.box.x, y - self.box.y
+
+    def next_point(self, dt_s: float) -> Point:
+        """Travel on for one tick; where the top-left corner goes. The caller moves the box
+        there (one axis at a time, pushing what is in the way)."""
+        self.box  # noqa: B018  (start from where the last tick left it)
+        self.travelled_px += self.spec.speed_px_s * dt_s
+        self._placed_px = self.travelled_px
+        return self.spec.path.point_at(self.travelled_px)
 
     def place(self, box: Box) -> None:
         """Set the exact position; the picture, the shape and its plain-float entry follow."""
@@ -108,57 +157,63 @@ class Platform(BoxSprite):
         self._follow_box()
 
     def _follow_box(self) -> None:
-        self.shape = TileShape(self.box, TileKind.SOLID, col=-1, row=self.number)
-        self.entry: Entry = entry_of(self.shape)
+        self._entry: Entry = entry_of(TileShape(self._box, TileKind.SOLID, col=-1,
+                                                row=self.number))
+
+
+def route_region(spec: PlatformSpec) -> Box:
+    """Every place a platform can be: its route's bounding box, grown by its size."""
+    xs = [x for x, _ in spec.path.points]
+    ys = [y for _, y in spec.path.points]
+    left, top = min(xs), min(ys)
+    return Box(left, top, max(xs) - left + spec.width_px, max(ys) - top + spec.height_px)
 
 
 @dataclass
 class PlatformIndex:
-    """Which platforms lie in which cells of the tile grid: a second layer over the tiles.
+    """Which platforms can be in which cells of the tile grid: a second layer over the tiles.
 
-    A platform is filed in every in-map cell its box overlaps, and refiled only when that
-    block of cells changes. The tile grid's query looks up this layer in the same cells it
-    visits for tiles (:meth:`TileGrid.entries_in`), so a query costs the platforms near it,
-    not every platform in the level. A platform that reaches outside the map is kept apart
-    and tested by every query, since no cell holds the part of it out there.
+    A platform is filed once, in every in-map cell its route region covers (every place its
+    route can take it). The tile grid's query looks up this layer in the same cells it
+    visits for tiles (:meth:`TileGrid.entries_in`), so a query costs the platforms that can
+    be near it, not every platform in the level; :meth:`near` tells the world which
+    platforms a body could meet this tick. A platform whose route leaves the map is kept
+    apart and tested by every query, since no cell holds the part of it out there.
     """
 
     grid: TileGrid
     cells: dict[int, list[Platform]] = field(default_factory=dict)
     outside: list[Platform] = field(default_factory=list)
-    _spans: dict[int, tuple[int, int, int, int] | None] = field(default_factory=dict)
 
     def file(self, platform: Platform) -> None:
-        """Put the platform in the cells of its current box (after it moved)."""
+        """Put the platform in the cells of its route region (once, when the level starts)."""
         grid = self.grid
-        left, top, right, bottom = platform.entry[:4]
-        span: tuple[int, int, int, int] | None = None  # outside the map: no cells
-        if left >= 0 and right <= grid.width_px and top >= 0 and bottom <= grid.height_px:
-            span = (math.floor(left / grid.tile_w), math.ceil(right / grid.tile_w) - 1,
-                    math.floor(top / grid.tile_h), math.ceil(bottom / grid.tile_h) - 1)
-        number = platform.number
-        if number in self._spans and self._spans[number] == span:
-            return  # still in the same cells: nothing to refile
-        for key in _keys(self._spans.get(number), grid.cols):
-            self.cells[key].remove(platform)
-        if platform in self.outside:
-            self.outside.remove(platform)
-        for key in _keys(span, grid.cols):
-            here = self.cells.setdefault(key, [])
-            here.append(platform)
-            here.sort(key=_number)
-        if span is None:
+        left, top, w, h = platform.region
+        right, bottom = left + w, top + h
+        if not (left >= 0 and right <= grid.width_px and top >= 0 and bottom <= grid.height_px):
             self.outside.append(platform)
-            self.outside.sort(key=_number)
-        self._spans[number] = span
+            return
+        for row in range(math.floor(top / grid.tile_h), math.ceil(bottom / grid.tile_h)):
+            for col in range(math.floor(left / grid.tile_w), math.ceil(right / grid.tile_w)):
+                self.cells.setdefault(row * grid.cols + col, []).append(platform)
 
-
-def _keys(span: tuple[int, int, int, int] | None, cols: int) -> list[int]:
-    if span is None:
-        return []
-    first_col, last_col, first_row, last_row = span
-    return [row * cols + col for row in range(first_row, last_row + 1)
-            for col in range(first_col, last_col + 1)]
+    def near(self, box: Box) -> set[Platform]:
+        """The platforms whose route region shares a cell with the box (and those off the map)."""
+        grid = self.grid
+        x, y, w, h = box
+        found = set(self.outside)
+        if not (w > 0 and h > 0):
+            return found
+        try:
+            first_col, last_col = math.floor(x / grid.tile_w), math.ceil((x + w) / grid.tile_w) - 1
+            first_row, last_row = math.floor(y / grid.tile_h), math.ceil((y + h) / grid.tile_h) - 1
+        except (ValueError, OverflowError):
+            return found
+        cells, cols = self.cells, grid.cols
+        for row in range(max(0, first_row), min(grid.rows - 1, last_row) + 1):
+            for col in range(max(0, first_col), min(cols - 1, last_col) + 1):
+                found.update(cells.get(row * cols + col, ()))
+        return found
 
 
 def _number(platform: Platform) -> int:
@@ -188,10 +243,10 @@ class SolidsWithPlatforms:
     def height_px(self) -> int:
         return self.grid.height_px
 
-    def moved(self, platform: Platform) -> None:
-        """Refile a platform that has just moved."""
+    def near(self, box: Box) -> set[Platform]:
+        """The platforms a body in ``box`` could meet (see :meth:`PlatformIndex.near`)."""
         assert self.index is not None
-        self.index.file(platform)
+        return self.index.near(box)
 
     def entries_in(self, left: float, top: float, right: float, bottom: float,
                    ) -> list[Entry]:

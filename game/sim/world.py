@@ -142,7 +142,8 @@ class World:
         self.map_w_px, self.map_h_px = self.grid.width_px, self.grid.height_px
         self.platforms: pygame.sprite.Group[Platform] = pygame.sprite.Group(
             Platform(spec, number) for number, spec in enumerate(self.level.platforms))
-        self.solids = SolidsWithPlatforms(self.grid, list(self.platforms))
+        self._platform_list = list(self.platforms)
+        self.solids = SolidsWithPlatforms(self.grid, self._platform_list)
         self._solids_without = [self.solids.without(p) for p in self.platforms]
         self.checkpoints: pygame.sprite.Group[Checkpoint] = pygame.sprite.Group(
             Checkpoint(box) for box in self.level.checkpoints)
@@ -205,8 +206,13 @@ class World:
         #    what rides it, through the same swept moves (so never into a wall).
         if log is not None:
             log.purpose = "platforms"
-        for platform in self.platforms:
-            self._move_platform(platform, *platform.next_step(dt), bodies)
+        awake = self._platforms_near(bodies)
+        for platform in self._platform_list:
+            if platform in awake:
+                for body in self._move_platform(platform, platform.next_point(dt), bodies):
+                    awake |= self._platforms_near([body])  # moved into another's reach?
+            else:
+                platform.advance(dt)  # no body near it: only the distance travelled moves
 
         # 3. x pass: move along x and stop flush at the first solid face swept.
         if log is not None:
@@ -349,19 +355,35 @@ class World:
         body.last_y = move
         body.place(move.box)
 
-    def _move_platform(self, platform: Platform, dx: float, dy: float,
-                       bodies: list[Body]) -> None:
-        """Move a platform one axis at a time, pushing bodies in its way and carrying riders."""
+    def _platforms_near(self, bodies: list[Body]) -> set[Platform]:
+        """The platforms a body could meet this tick: those whose route region it touches,
+        and those it rides."""
+        near: set[Platform] = set()
+        if self._platform_list:
+            for body in bodies:
+                near |= self.solids.near(body.box)
+                if body.riding is not None:
+                    near.add(body.riding)
+        return near
+
+    def _move_platform(self, platform: Platform, to: tuple[float, float],
+                       bodies: list[Body]) -> list[Body]:
+        """Move a platform one axis at a time, pushing bodies in its way and carrying riders;
+        return the bodies it moved."""
+        x, y, w, h = platform.box
+        dx, dy = to[0] - x, to[1] - y
+        moved: list[Body] = []
         if dx == 0 and dy == 0:
-            return
+            return moved
         riders = [body for body in bodies if body.riding is platform]
         others = self._solids_without[platform.number]
         for step, axis in ((dx, "x"), (dy, "y")):
             if step == 0:
                 continue
-            platform.place(platform.box.moved(dx=step) if axis == "x"
-                           else platform.box.moved(dy=step))
-            self.solids.moved(platform)
+            if axis == "x":
+                platform.place(Box(to[0], y, w, h))
+            else:
+                platform.place(Box(to[0], to[1], w, h))
             move = move_x if axis == "x" else move_y
             left, top, right, bottom = platform.entry[:4]
             solid = right > left and bottom > top
@@ -372,8 +394,11 @@ class World:
                     body.place(move(others, body.box, _push_needed(platform.box, body.box,
                                                                    axis, step)).box)
                     body.crushed = body.box.overlaps(platform.box)
+                    moved.append(body)
                 elif body in riders:
                     body.place(move(others, body.box, step).box)
+                    moved.append(body)
+        return moved
 
     def _checkpoint_spawn(self, number: int) -> Box:
         """Where the player comes back after touching checkpoint ``number``: standing in it."""
