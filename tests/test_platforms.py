@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 from pathlib import Path
 
@@ -113,3 +114,34 @@ def test_touching_a_checkpoint_moves_the_respawn_point_there() -> None:
     assert checkpoint_seen and campaign.deaths == 1
     player = campaign.world.player.box
     assert player.x >= 64 and player.right <= 80 and player.bottom == 32
+
+
+WIDE = ["P" + " " * 199, *([" " * 200] * 8), "#" * 200]
+
+
+def gliders(count: int) -> tuple[PlatformSpec, ...]:
+    """``count`` platforms gliding over two tiles, far to the right of the player."""
+    return tuple(PlatformSpec(Route(((800.0 + 20 * k, 32.0), (832.0 + 20 * k, 32.0))),
+                              16, 8, 30.0) for k in range(count))
+
+
+def test_a_hundred_far_platforms_add_no_lookup_work_to_a_tick() -> None:
+    work = {}
+    for count in (2, 100):
+        world = World(replace(level_from_ascii(WIDE), platforms=gliders(count)))
+        tested = []
+        for tick in range(120):
+            world.step(RIGHT if tick % 60 < 30 else NOTHING)
+            tested.append((world.stats.cells_visited, world.stats.shapes_tested))
+        work[count] = tested
+    assert work[2] == work[100]
+
+
+def test_a_platform_nobody_is_near_is_where_its_route_puts_it_whenever_it_is_read() -> None:
+    world = World(replace(level_from_ascii(WIDE), platforms=gliders(3)))
+    for tick in range(1, 200):
+        world.step(NOTHING)
+        platform = list(world.platforms)[tick % 3]
+        x, y = platform.spec.path.point_at(30.0 * tick / 60)
+        assert platform.box == Box(x, y, 16, 8)
+        assert platform.rect.topleft == (math.floor(x), math.floor(y))

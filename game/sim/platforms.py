@@ -184,6 +184,8 @@ class PlatformIndex:
     grid: TileGrid
     cells: dict[int, list[Platform]] = field(default_factory=dict)
     outside: list[Platform] = field(default_factory=list)
+    # The block of map every filed route region lies in: a body outside it is near none.
+    bounds: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
 
     def file(self, platform: Platform) -> None:
         """Put the platform in the cells of its route region (once, when the level starts)."""
@@ -193,6 +195,12 @@ class PlatformIndex:
         if not (left >= 0 and right <= grid.width_px and top >= 0 and bottom <= grid.height_px):
             self.outside.append(platform)
             return
+        if self.cells:
+            low_x, low_y, high_x, high_y = self.bounds
+            self.bounds = (min(low_x, left), min(low_y, top), max(high_x, right),
+                           max(high_y, bottom))
+        else:
+            self.bounds = (left, top, right, bottom)
         for row in range(math.floor(top / grid.tile_h), math.ceil(bottom / grid.tile_h)):
             for col in range(math.floor(left / grid.tile_w), math.ceil(right / grid.tile_w)):
                 self.cells.setdefault(row * grid.cols + col, []).append(platform)
@@ -202,7 +210,9 @@ class PlatformIndex:
         grid = self.grid
         x, y, w, h = box
         found = set(self.outside)
-        if not (w > 0 and h > 0):
+        low_x, low_y, high_x, high_y = self.bounds
+        if not (w > 0 and h > 0 and x <= high_x and low_x <= x + w and y <= high_y
+                and low_y <= y + h):
             return found
         try:
             first_col, last_col = math.floor(x / grid.tile_w), math.ceil((x + w) / grid.tile_w) - 1
