@@ -465,6 +465,35 @@ def test_contacts_log_one_start_for_a_long_touch() -> None:
     assert f"'print every tick' would have printed {scene.flood_lines} lines" in scene.status()
 
 
+def test_the_tunnelling_picture_says_what_the_readme_says() -> None:
+    bed, scene = open_scene("tunnelling")
+    for _ in range(390 - 1):
+        bed.frame()
+    assert isinstance(scene, Tunnelling)
+    lanes = dict(zip(LANES, scene.flights, strict=True))
+    assert lanes["discrete"].outcome.startswith("TUNNELLED")
+    assert lanes["sub-steps"].outcome.endswith(", 8 px inside")
+    assert lanes["swept"].outcome.startswith("hit") and "flush" in lanes["swept"].outcome
+    assert lanes["speed clamp"].ticks - lanes["swept"].ticks == 14
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert "two sub-steps catch it 8 px deep, the clamp catches it 14 ticks late" in readme
+    assert '"tunnelling": 390' in (ROOT / "game/tools/lab_screenshots.py").read_text("utf-8")
+
+
+def test_the_contacts_picture_says_what_the_readme_says() -> None:
+    """The README quotes the contacts picture's figures; they come from a deterministic run."""
+    bed, scene = open_scene("contacts")
+    for _ in range(420 - 1):
+        bed.frame()
+    assert scene.ticks == 420
+    assert "events so far: 13 (starts and ends)" in scene.status()
+    assert "'print every tick' would have printed 457 lines" in scene.status()
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert "after 420 ticks the tracker has logged 13 starts and ends" in readme
+    assert "would have written 457 lines" in readme
+    assert '"contacts": 420' in (ROOT / "game/tools/lab_screenshots.py").read_text("utf-8")
+
+
 def test_xray_the_round_sprites_square_box_is_wrong_in_its_corner() -> None:
     bed, scene = open_scene("x-ray")
     assert isinstance(scene, XRay)

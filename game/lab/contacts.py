@@ -65,7 +65,7 @@ class Contacts(Scene):
     def refresh(self) -> None:
         log = [str(event) for event in self.tracker.log]
         self.lines = [
-            f"tick {self.tracker.tick}; touching now: {len(self.tracker.touching)} pairs",
+            f"tick {self.tracker.tick}; pairs touching now: {len(self.tracker.touching)}",
             f"events so far: {self.events} (starts and ends)",
             f"'print every tick' would have printed {self.flood_lines} lines",
             f"log (last {LOG_SHOWN}, a bounded deque):",
