@@ -3,7 +3,7 @@
 Where it sits: drawn last in a frame, over the world and the HUD, when the player presses F1.
 It draws from what the last tick *recorded* (each body's ``last_x``/``last_y`` moves, the
 world's query log and ``world.stats``) and changes nothing: it never calls
-:meth:`TileGrid.shapes_in`, whose work counters the stats are read from, and never moves a
+:meth:`TileGrid.entries_in`, whose work counters the stats are read from, and never moves a
 sprite. While the overlay is on, the tick keeps the query log (:class:`game.sim.world.Measure`):
 every lookup writes down what asked for it and the block of cells it visited.
 
@@ -147,7 +147,7 @@ Outline = tuple[Color, pygame.Rect]
 def _draw_tested(wash: Wash, world: World) -> tuple[list[Outline], list[Outline]]:
     """Wash every cell the last tick's lookups visited; return a square for each such cell
     and the outline of every shape they tested (read-only: cells are read through
-    ``shapes_at``, never ``shapes_in``)."""
+    ``shapes_at``, never ``entries_in``)."""
     grid, camera = world.grid, world.camera
     tested = Checked(grid, world.query_log)
     squares: list[Outline] = []

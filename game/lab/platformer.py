@@ -5,7 +5,7 @@ moved exactly as the game moves its bodies: :func:`~game.sim.movement.move_x`, t
 :func:`~game.sim.movement.move_y`, then the ground probe
 :func:`~game.sim.movement.ground_under`. Blue is the region the x step swept, purple the y
 step's, and the washed cells are the ones :meth:`~game.sim.tilegrid.TileGrid.cells_covering`
-gives for each swept region, which is where ``shapes_in`` looked (the panel prints the cells
+gives for each swept region, which is where ``entries_in`` looked (the panel prints the cells
 and shapes its counters recorded). Left/Right run, Up or Space jumps, F makes the run twenty
 times faster (over a tile and a half a tick): the body still stops flush against a wall.
 Drag the body to put it anywhere.

@@ -10,9 +10,11 @@ comments in :meth:`World.step` and the README's tour name the same steps in the 
 
 1. **Intent**: the player reads the held actions, the enemies look ahead; each sets a velocity.
 2. **Platforms**: each moving platform advances along its path, pushing the bodies in its way
-   and carrying its riders through the same swept moves, so never into a wall.
+   and carrying its riders through the same swept moves, so never into a wall (one whose
+   route no body touches only counts the distance it travels; its box catches up when read).
 3. **x pass**: every body moves along x, swept against the tile grid, stopping flush.
-4. **y pass**: every body moves along y the same way; the 1-pixel probe sets ``on_ground``.
+4. **y pass**: every body moves along y the same way and is placed; the floor it landed on,
+   or else the 1-pixel probe, sets ``on_ground``.
 5. **React**: bodies read what their moves hit (land, bump, turn round).
 6. **Pickups**: coins by ``groupcollide`` with ``dokill``, on the path the player travelled.
 7. **Contacts**: the pairs the player touches; a tracker turns them into start/end events
@@ -203,7 +205,8 @@ class World:
             body.crushed = False
 
         # 2. Platforms: each moves along its path, pushing what is in its way and carrying
-        #    what rides it, through the same swept moves (so never into a wall).
+        #    what rides it, through the same swept moves (so never into a wall). Only the
+        #    platforms a body could meet are moved; the others only count their distance.
         if log is not None:
             log.purpose = "platforms"
         awake = self._platforms_near(bodies)
