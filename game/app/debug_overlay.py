@@ -218,12 +218,13 @@ def _contact_line(event: ContactEvent[ContactKey]) -> str:
     return f"tick {event.tick} {sign}{other[0]} {other[1]}"
 
 
-def _draw_panel(target: pygame.Surface, world: World, assets: Assets, fps: float,
+def _draw_panel(target: pygame.Surface, world: World, assets: Assets, fps: float | None,
                 update_ms: float, extra_lines: Sequence[str] = ()) -> None:
     player, stats = world.player, world.stats
     ground = "ground" if player.on_ground else "air"
+    frames = "no window" if fps is None else f"FPS {fps:4.1f}"  # a picture has no frame rate
     lines = (
-        f"FPS {fps:4.1f}  tick {update_ms:4.2f} ms",
+        f"{frames}  tick {update_ms:4.2f} ms",
         f"collide {stats.collision_s * MS_PER_S:4.2f} ms",
         f"{stats.shapes_tested} shapes in {stats.cells_visited} cells",
         (f"{len(world.query_log.queries)} lookups, all drawn" if world.measure.queries
@@ -261,12 +262,13 @@ def _panel_backing(size: tuple[int, int]) -> pygame.Surface:
     return backing
 
 
-def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float,
+def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float | None,
                update_ms: float, extra_lines: Sequence[str] = ()) -> None:
     """Draw the overlay for the last tick: checked tiles, sweeps, hitboxes, and the numbers.
 
-    ``fps`` is the measured frame rate; ``update_ms`` is how long the last frame's ticks
-    took, in milliseconds; ``extra_lines`` end the panel (the window's stepping keys and
+    ``fps`` is the window's measured frame rate, None for a picture made without a window
+    (the panel then says so); ``update_ms`` is how long the last frame's ticks took, in
+    milliseconds; ``extra_lines`` end the panel (the window's stepping keys and
     state, :mod:`game.app.stepping`). Reads ``world`` and changes none of it.
     """
     camera = world.camera

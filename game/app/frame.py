@@ -19,7 +19,7 @@ from game.sim.world import World
 
 
 def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = None,
-                 renderer: WorldRenderer | None = None, frame: int = 0, fps: float = 0.0,
+                 renderer: WorldRenderer | None = None, frame: int = 0, fps: float | None = None,
                  update_ms: float = 0.0, world: World | None = None,
                  debug_lines: Sequence[str] = ()) -> pygame.Surface:
     """Draw the current state of play on the display surface and return it: the campaign's
