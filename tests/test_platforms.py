@@ -145,3 +145,40 @@ def test_a_platform_nobody_is_near_is_where_its_route_puts_it_whenever_it_is_rea
         x, y = platform.spec.path.point_at(30.0 * tick / 60)
         assert platform.box == Box(x, y, 16, 8)
         assert platform.rect.topleft == (math.floor(x), math.floor(y))
+
+
+def _two_flags_level(slime: bool) -> Level:
+    """A floor with two checkpoints, and maybe a slime between them."""
+    level = level_from_ascii(["                    ",
+                              "                    ",
+                              " P        " + ("E" if slime else " ") + "         ",
+                              "####################"], spawn=Box(16, 34, 12, 14))
+    return replace(level, checkpoints=(Box(96, 16, 16, 32), Box(224, 16, 16, 32)))
+
+
+def test_a_checkpoint_jumped_over_still_counts_and_a_slime_sends_the_player_back_to_it(
+        ) -> None:
+    level = _two_flags_level(slime=True)
+    world = World(level, replace(Tuning(), enemy_speed_px_s=0.0))
+    world.player.teleport(Box(60, -200, 12, 14))   # falling from high above, running right
+    counted_at = []
+    for _ in range(300):
+        events = world.step(RIGHT)
+        counted_at += [world.player.box for e in events if e.kind is EventKind.CHECKPOINT]
+        if any(e.kind is EventKind.HURT for e in events):
+            break
+    assert len(counted_at) == 1 and counted_at[0].bottom < level.checkpoints[0].top
+    assert world.player.box.x >= 96 and world.player.box.right <= 112   # back at that flag
+
+
+def test_walking_back_past_an_earlier_flag_keeps_the_later_respawn_point() -> None:
+    world = World(_two_flags_level(slime=False), Tuning())
+    counted = []
+    for held in (RIGHT, frozenset({Action.LEFT})):
+        for _ in range(200):
+            counted += [e.value for e in world.step(held) if e.kind is EventKind.CHECKPOINT]
+            if held is RIGHT and world.player.box.x > 250:
+                break
+    assert counted == [0, 1] and world.checkpoint_reached == 1
+    assert world.player.box.x < 96                     # walked back past the first flag
+    assert world.spawn.x >= 224

@@ -50,7 +50,8 @@ class Exit(Trigger):
 
 
 class Checkpoint(Trigger):
-    """Touching it moves the player's respawn point here; the one last touched is lit."""
+    """Touching or passing it the first time moves the player's respawn point here; the one
+    counted last is lit."""
 
     def __init__(self, box: Box) -> None:
         super().__init__(box)

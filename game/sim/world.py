@@ -18,11 +18,13 @@ comments in :meth:`World.step` and the README's tour name the same steps in the 
 5. **React**: bodies read what their moves hit (land, bump, turn round).
 6. **Pickups**: coins by ``groupcollide`` with ``dokill``, on the path the player travelled.
 7. **Contacts**: the pairs the player touches; a tracker turns them into start/end events
-   (entering the exit completes the level, entering a checkpoint moves the respawn point).
+   (entering the exit completes the level); a checkpoint touched or passed for the first
+   time moves the respawn point there.
 8. **Enemies and hazards**: a touch from above is a stomp, any other touch hurts, and so do
    spikes, for as long as they are touched.
 9. **The void and the crush**: falling below the map, or being pushed into a wall by a
-   platform, costs a life; the player respawns at the spawn or the last checkpoint.
+   platform, costs a life, and so does any touch of an enemy that is not a stomp: the player
+   respawns at the checkpoint counted last, else the spawn.
 10. **Camera**: follows the player.
 
 Before step 1 a squashed enemy's time on screen counts down; after step 9, when a report
@@ -150,6 +152,7 @@ class World:
         self.checkpoints: pygame.sprite.Group[Checkpoint] = pygame.sprite.Group(
             Checkpoint(box) for box in self.level.checkpoints)
         self.checkpoint_reached: int | None = None
+        self.checkpoints_counted: set[int] = set()  # each moves the respawn point once
         self.squashed: pygame.sprite.Group[Squashed] = pygame.sprite.Group()  # drawn only
         # A spawn drawn inside a wall is moved to the nearest free place before play starts.
         self.spawn = nearest_free_place(self.grid, self.level.spawn)
@@ -250,16 +253,22 @@ class World:
             log.purpose = "hazards"
         touching_now = self._player_contacts()
         changes = self.contacts.update(touching_now)
-        for kind, number in (key for pair in changes.started for key in pair):
-            if kind == "exit":
-                events.append(Event(EventKind.EXIT))
-            elif kind == "checkpoint":
+        entered = [key for pair in changes.started for key in pair]
+        events.extend(Event(EventKind.EXIT) for kind, _ in entered if kind == "exit")
+        # A checkpoint counts the first time the player touches it or passes it (a jump
+        # over the flag counts too): the respawn point moves there, and never back to an
+        # earlier flag walked past again.
+        for number, flag in enumerate(self.checkpoints):
+            if number in self.checkpoints_counted:
+                continue
+            if ("checkpoint", number) in entered or self._passed(before[self.player], flag.box):
                 if log is not None:
                     log.purpose = "checkpoint spawn"
+                self.checkpoints_counted.add(number)
                 self.spawn = self._checkpoint_spawn(number)
                 self.checkpoint_reached = number
-                for flag_number, flag in enumerate(self.checkpoints):
-                    flag.reached = flag_number == number
+                for flag_number, other in enumerate(self.checkpoints):
+                    other.reached = flag_number == number
                 events.append(Event(EventKind.CHECKPOINT, number))
 
         # 8. Enemies and hazards: landing on top is a stomp; any other touch hurts. Spikes
@@ -402,6 +411,12 @@ class World:
                     body.place(move(others, body.box, step).box)
                     moved.append(body)
         return moved
+
+    def _passed(self, was: Box, flag: Box) -> bool:
+        """Did the player's centre reach or cross the flag's centre line this tick?"""
+        centre = flag.x + flag.w / 2
+        now = self.player.box
+        return (was.x + was.w / 2 - centre) * (now.x + now.w / 2 - centre) <= 0
 
     def _checkpoint_spawn(self, number: int) -> Box:
         """Where the player comes back after touching checkpoint ``number``: standing in it."""
