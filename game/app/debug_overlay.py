@@ -79,7 +79,8 @@ CELL_COLORS: dict[str, Color] = {
 OTHER_CELL_COLOR: Color = (160, 160, 160)  # any other lookup (a checkpoint's spawn)
 CELL_SQUARE_STEP_PX = 2  # how much each square sits inside the one before
 
-PANEL_COLOR: Color = (0, 0, 0, 160)
+PANEL_COLOR: Color = (0, 0, 0)
+PANEL_ALPHA = 160  # 0..255: how dark the panel's glass is
 PANEL_TEXT: Color = (230, 236, 255)
 PANEL_PAD_PX = 3
 PANEL_GAP_PX = 2  # between the HUD bar and the panel
@@ -127,10 +128,14 @@ class Checked:
     def __init__(self, grid: TileGrid, log: QueryLog) -> None:
         self.cells: dict[str, set[tuple[int, int]]] = {}
         self.shapes: dict[TileShape, None] = {}  # in the order first tested, each once
+        seen: set[tuple[int, int]] = set()  # a cell's shapes are gathered on its first visit
         for query in log.queries:
             visited = self.cells.setdefault(query.purpose, set())
             for cell in query.cells():
                 visited.add(cell)
+                if cell in seen:
+                    continue
+                seen.add(cell)
                 for shape in grid.shapes_at(*cell):
                     if shape.box.w > 0 and shape.box.h > 0:  # the lookups skip empty shapes
                         self.shapes.setdefault(shape)
@@ -150,14 +155,15 @@ def _draw_tested(wash: Wash, world: World) -> tuple[list[Outline], list[Outline]
     ``shapes_at``, never ``entries_in``)."""
     grid, camera = world.grid, world.camera
     tested = Checked(grid, world.query_log)
+    dx, dy = screen_offset(camera)
+    tile_w, tile_h = grid.tile_w, grid.tile_h
     squares: list[Outline] = []
     order = [*CELL_COLORS, *(p for p in tested.cells if p not in CELL_COLORS)]
     inset: dict[tuple[int, int], int] = {}
     for purpose in order:
         color = CELL_COLORS.get(purpose, OTHER_CELL_COLOR)
-        for col, row in sorted(tested.cells.get(purpose, ())):
-            cell = _screen_rect(Box(col * grid.tile_w, row * grid.tile_h, grid.tile_w,
-                                    grid.tile_h), camera)
+        for col, row in tested.cells.get(purpose, ()):  # squares of two cells never overlap
+            cell = pygame.Rect(col * tile_w - dx, row * tile_h - dy, tile_w, tile_h)
             if (col, row) not in inset:
                 wash.fill(CELL_WASH, cell)
             step = inset[col, row] = inset.get((col, row), 0) + CELL_SQUARE_STEP_PX
@@ -176,9 +182,12 @@ def _draw_tested(wash: Wash, world: World) -> tuple[list[Outline], list[Outline]
 def _draw_sweep(wash: Wash, move: Move | None, color: Color,
                 camera: Camera) -> pygame.Rect | None:
     """Wash the region one axis move swept; return the bar marking the face it hit, if any."""
-    if move is None or not move.swept.is_finite():
+    if move is None:
         return None
-    wash.fill(color, _screen_rect(move.swept, camera))
+    swept = move.swept
+    if not swept.is_finite():
+        return None
+    wash.fill(color, _screen_rect(swept, camera))
     hit = move.hit
     if hit is None:
         return None
@@ -257,8 +266,11 @@ def _line_face(font: pygame.font.Font, line: str) -> pygame.Surface:
 
 @lru_cache(maxsize=TEXT_CACHE_LINES)
 def _panel_backing(size: tuple[int, int]) -> pygame.Surface:
-    backing = pygame.Surface(size, pygame.SRCALPHA)
+    """The panel's dark glass: one colour at one alpha for the whole surface, which blends
+    faster than the same alpha stored in every pixel."""
+    backing = pygame.Surface(size)
     backing.fill(PANEL_COLOR)
+    backing.set_alpha(PANEL_ALPHA)
     return backing
 
 
