@@ -39,6 +39,7 @@ Contact(t=0.5, nx=0, ny=-1)
 from __future__ import annotations
 
 import math
+from math import isfinite
 from typing import NamedTuple
 
 from game.collision.aabb import Box
@@ -58,26 +59,15 @@ class Contact(NamedTuple):
 
 
 def _check_finite(box: Box, name: str) -> None:
-    if not (box.is_finite() and math.isfinite(box.right) and math.isfinite(box.bottom)):
+    x, y, w, h = box
+    if not (isfinite(x) and isfinite(y) and isfinite(w) and isfinite(h)
+            and isfinite(x + w) and isfinite(y + h)):
         raise ValueError(f"{name} must have finite position, size and edges, got {box}")
 
 
 def _check_move(dx: float, dy: float) -> None:
-    if not (math.isfinite(dx) and math.isfinite(dy)):
+    if not (isfinite(dx) and isfinite(dy)):
         raise ValueError(f"a move must be a finite number of pixels, got ({dx}, {dy})")
-
-
-def _window(lo: float, hi: float, other_lo: float, other_hi: float,
-            d: float) -> tuple[float, float] | None:
-    """The open window of time ``(entry, exit)`` during which ``[lo, hi)`` moving at ``d``
-    per tick overlaps ``[other_lo, other_hi)`` on one axis; None if it never does."""
-    if d == 0:
-        if lo < other_hi and other_lo < hi:
-            return (-math.inf, math.inf)
-        return None
-    if d > 0:
-        return ((other_lo - hi) / d, (other_hi - lo) / d)
-    return ((other_hi - lo) / d, (other_lo - hi) / d)
 
 
 def _sign(v: float) -> int:
@@ -88,23 +78,40 @@ def sweep(box: Box, dx: float, dy: float, wall: Box) -> Contact | None:
     """The first moment moving ``box`` by ``(dx, dy)`` makes it overlap the still ``wall``.
 
     Boxes must be normalised; empty boxes never hit anything. Refuses NaN and infinities.
+    The arithmetic is on plain floats: the only object made is the :class:`Contact`.
     """
     _check_finite(box, "the moving box")
     _check_finite(wall, "the still box")
     _check_move(dx, dy)
-    if box.w <= 0 or box.h <= 0 or wall.w <= 0 or wall.h <= 0:
+    x, y, w, h = box
+    wall_x, wall_y, wall_w, wall_h = wall
+    if w <= 0 or h <= 0 or wall_w <= 0 or wall_h <= 0:
         return None
-    on_x = _window(box.left, box.right, wall.left, wall.right, dx)
-    on_y = _window(box.top, box.bottom, wall.top, wall.bottom, dy)
-    if on_x is None or on_y is None:
-        return None
-    entry, leave = max(on_x[0], on_y[0]), min(on_x[1], on_y[1])
+    right, bottom, wall_right, wall_bottom = x + w, y + h, wall_x + wall_w, wall_y + wall_h
+    # Each axis: the open window of time (entry, exit) during which the intervals overlap.
+    if dx == 0:
+        if not (x < wall_right and wall_x < right):
+            return None  # never overlapping on x, so never at all
+        x_entry, x_exit = -math.inf, math.inf
+    elif dx > 0:
+        x_entry, x_exit = (wall_x - right) / dx, (wall_right - x) / dx
+    else:
+        x_entry, x_exit = (wall_right - x) / dx, (wall_x - right) / dx
+    if dy == 0:
+        if not (y < wall_bottom and wall_y < bottom):
+            return None
+        y_entry, y_exit = -math.inf, math.inf
+    elif dy > 0:
+        y_entry, y_exit = (wall_y - bottom) / dy, (wall_bottom - y) / dy
+    else:
+        y_entry, y_exit = (wall_bottom - y) / dy, (wall_y - bottom) / dy
+    entry, leave = max(x_entry, y_entry), min(x_exit, y_exit)
     if not (entry < leave and entry < 1 and leave > 0):
         return None
     if entry < 0:
         return Contact(0.0, 0, 0)
     t = entry if entry > 0 else 0.0  # never -0.0
-    if on_y[0] >= on_x[0]:  # the tie rule: y wins
+    if y_entry >= x_entry:  # the tie rule: y wins
         return Contact(t, 0, -_sign(dy))
     return Contact(t, -_sign(dx), 0)
 
