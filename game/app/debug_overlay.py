@@ -131,14 +131,16 @@ class Checked:
         seen: set[tuple[int, int]] = set()  # a cell's shapes are gathered on its first visit
         for query in log.queries:
             visited = self.cells.setdefault(query.purpose, set())
-            for cell in query.cells():
-                visited.add(cell)
-                if cell in seen:
-                    continue
-                seen.add(cell)
-                for shape in grid.shapes_at(*cell):
-                    if shape.box.w > 0 and shape.box.h > 0:  # the lookups skip empty shapes
-                        self.shapes.setdefault(shape)
+            cols = range(query.first_col, query.last_col + 1)
+            for row in range(query.first_row, query.last_row + 1):
+                for col in cols:
+                    visited.add((col, row))
+                    if (col, row) in seen:
+                        continue
+                    seen.add((col, row))
+                    for shape in grid.shapes_at(col, row):
+                        if shape.box.w > 0 and shape.box.h > 0:  # lookups skip empty shapes
+                            self.shapes.setdefault(shape)
             for shape in query.extra:
                 self.shapes.setdefault(shape)
 
