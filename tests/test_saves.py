@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from game.app import saves
+from game.app.files import FileProblem
 from game.app.saves import Attempt, Finish, JsonFile, Progress, data_dir, progress_file
 from game.levels import FIRST_LEVEL, load_level
 from game.sim.campaign import Campaign
@@ -116,10 +117,11 @@ def test_an_unreadable_save_is_kept_aside_and_reported(data_home: Path,
                                                         monkeypatch: pytest.MonkeyPatch) -> None:
     progress_file().save(played().to_json())
 
-    def refuse(self: Path, *args: object, **kwargs: object) -> str:
-        raise PermissionError(errno.EACCES, "Permission denied", str(self))
+    def refuse(path: Path, *args: object, **kwargs: object) -> str:
+        raise FileProblem(f"{path}: the file cannot be read (Permission denied) — check it",
+                          "Permission denied")
 
-    monkeypatch.setattr(Path, "read_text", refuse)
+    monkeypatch.setattr(saves, "read_small_text", refuse)
     loaded, problem = load(progress_file())
     monkeypatch.undo()
     assert loaded == Progress()

@@ -1,8 +1,9 @@
 """The command line of ``python -m game`` (see the README and the contract).
 
 Where it sits: the outermost layer. It parses options, turns every bad input into one
-sentence and an exit status (0 done, 1 a bad level or input file, 2 bad usage), and hands
-the run to :mod:`game.app.run`.
+sentence and an exit status (0 done, 1 a file that cannot be read or written, 2 bad usage,
+130 stopped by Ctrl-C), and hands the run to :mod:`game.app.run`. Installed with pip, the
+same command is ``tile-hopper``.
 """
 
 from __future__ import annotations
@@ -12,25 +13,20 @@ import os
 import sys
 from pathlib import Path
 
+from game.app.arguments import Parser, run_command, whole_number
 
-def _non_negative(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"{text} is negative; give 0 or more ticks")
-    return value
+MAX_TICKS = 1_000_000_000  # six months of game time
 
 
 def parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(
-        prog="python -m game",
+    p = Parser(
+        prog=Path(sys.argv[0]).name if Path(sys.argv[0]).stem == "tile-hopper"
+        else "python -m game",
         description="A platformer that teaches 2D collision detection. Levels are Tiled maps.")
     p.add_argument("--level", type=Path, metavar="PATH", help="start at this .tmx map")
     p.add_argument("--headless", action="store_true",
                    help="no window and no audio; simulate as fast as possible")
-    p.add_argument("--ticks", type=_non_negative, metavar="N",
+    p.add_argument("--ticks", type=whole_number(0, MAX_TICKS, "ticks"), metavar="N",
                    help="stop after N ticks (1 tick = 1/60 s of game time)")
     p.add_argument("--inputs", type=Path, metavar="FILE", help="replay an input script")
     p.add_argument("--record", type=Path, metavar="FILE", help="record this run's input")
@@ -44,6 +40,10 @@ def parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    return run_command(lambda: _main(argv))
+
+
+def _main(argv: list[str] | None) -> int:
     args = parser().parse_args(argv)
     if args.headless:  # before pygame is imported anywhere: no window, no sound card
         os.environ["SDL_VIDEODRIVER"] = "dummy"

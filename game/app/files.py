@@ -1,27 +1,208 @@
-"""Write files so that a crash or a full disk never leaves half of one behind.
+"""The files a run reads and writes, handled so that no path can hang, crash or flood it.
 
-Where it sits: used by ``--record``, ``--report`` and ``--screenshot``. A temporary file in
-the same folder is written and flushed, then renamed over the target: on every platform
-Python supports, :func:`os.replace` is atomic, so readers see the old file or the new one.
+Where it sits: under every file the app touches: ``--inputs``, ``--record``, ``--report``,
+``--screenshot``, and the player's ``settings.json`` and ``progress.json``.
+
+What it teaches:
+  * **Look before you open.** :func:`read_small_text` asks ``stat`` what a path is before
+    opening it: a folder, a pipe (which would wait forever for a writer) or a device such as
+    ``/dev/zero`` (which never ends) is refused, and so is a file larger than the caller's
+    limit, so nothing is read that could not fit.
+  * **Write atomically.** :func:`write_atomically` writes a temporary file in the same
+    folder and renames it over the target: on every platform Python supports,
+    :func:`os.replace` is atomic, so readers see the old file or the new one, never half.
+    A temporary file left by a run that was killed mid-write is removed the next time the
+    same file is read (:func:`remove_orphans`).
+  * **Check an output before the work.** :func:`output_problem` says, before a long run,
+    whether the path given for a report can be written at all (a folder, a path under a
+    file, a read-only folder, a device that a rename would replace), so a run never ends by
+    losing its result.
+
+Every problem is a :class:`FileProblem` whose message is one sentence naming the path.
 """
 
 from __future__ import annotations
 
+import contextlib
+import errno
 import os
+import re
 import secrets
+import stat
 from collections.abc import Callable
 from pathlib import Path
 
+MAX_PATH_SHOWN_CHARS = 200  # a path longer than this is shown by its start and end
+
+
+class FileProblem(Exception):
+    """A file that cannot be read or written; the message is one sentence for a person,
+    and ``reason`` the short cause inside it (``"Permission denied"``)."""
+
+    def __init__(self, sentence: str, reason: str = "") -> None:
+        super().__init__(sentence)
+        self.reason = reason or sentence
+
+
+def shown(path: Path | str) -> str:
+    """``path`` as a message quotes it: whole if short, else its start and its end.
+
+    >>> shown("a/b.txt")
+    'a/b.txt'
+    >>> len(shown("x" * 100_000)) < 250
+    True
+    """
+    text = str(path)
+    if len(text) <= MAX_PATH_SHOWN_CHARS:
+        return text
+    half = MAX_PATH_SHOWN_CHARS // 2
+    return f"{text[:half]}…({len(text) - 2 * half:,} characters)…{text[-half:]}"
+
+
+def _cause(sentence: str) -> str:
+    """The middle of ``PATH: cause — fix``."""
+    return sentence.split(" — ", 1)[0].rpartition(": ")[2]
+
+
+def _reason(error: OSError) -> str:
+    return error.strerror or type(error).__name__
+
+
+def read_small_text(path: Path, max_bytes: int, what: str) -> str:
+    """The UTF-8 text of a regular file of at most ``max_bytes``; else a FileProblem.
+
+    ``what`` names the file for the message (``"the input script"``).
+    """
+    name = shown(path)
+    try:
+        status = path.stat()
+    except (FileNotFoundError, NotADirectoryError):
+        raise FileProblem(f"{name}: {what} does not exist — check the path",
+                          "it does not exist") from None
+    except (OSError, ValueError) as error:
+        reason = _reason(error) if isinstance(error, OSError) else "not a usable path"
+        raise FileProblem(f"{name}: {what} cannot be read ({reason}) — check the path",
+                          reason) from None
+    if stat.S_ISDIR(status.st_mode):
+        raise FileProblem(f"{name}: {what} is a folder, not a file — give the path of a file",
+                          "it is a folder")
+    if not stat.S_ISREG(status.st_mode):
+        raise FileProblem(f"{name}: {what} is not a regular file (a pipe or a device?) — "
+                          "give the path of a file", "it is not a regular file")
+    if status.st_size > max_bytes:
+        raise FileProblem(f"{name}: {what} is larger than {max_bytes:,} bytes — "
+                          "give a smaller file", f"it is larger than {max_bytes:,} bytes")
+    try:  # non-blocking: the file could be swapped for a pipe between stat and open
+        descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+        with os.fdopen(descriptor, "rb") as stream:
+            if not stat.S_ISREG(os.fstat(stream.fileno()).st_mode):
+                raise FileProblem(f"{name}: {what} is not a regular file — "
+                                  "give the path of a file")
+            data = stream.read(max_bytes + 1)
+    except OSError as error:
+        raise FileProblem(f"{name}: {what} cannot be read ({_reason(error)}) — "
+                          "check that you may read it", _reason(error)) from None
+    if len(data) > max_bytes:
+        raise FileProblem(f"{name}: {what} is larger than {max_bytes:,} bytes — "
+                          "give a smaller file", f"it is larger than {max_bytes:,} bytes")
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise FileProblem(f"{name}: {what} is not UTF-8 text — save it as plain text",
+                          "it is not UTF-8 text") from None
+
+
+def output_problem(path: Path) -> str | None:
+    """Why ``path`` cannot take an output file, or None if it looks writable.
+
+    Looked at before a run starts; a write can still fail later (a full disk), which
+    :func:`write_atomically` reports as a FileProblem.
+
+    >>> import tempfile
+    >>> folder = Path(tempfile.mkdtemp())
+    >>> output_problem(folder / "report.json") is None
+    True
+    >>> output_problem(folder)  # doctest: +ELLIPSIS
+    '...: it is a folder — give the name of a file inside it'
+    """
+    name = shown(path)
+    try:
+        status = path.stat()
+    except (FileNotFoundError, NotADirectoryError):
+        status = None
+    except (OSError, ValueError) as error:
+        reason = _reason(error) if isinstance(error, OSError) else "not a usable path"
+        return f"{name}: cannot be written ({reason}) — give another path"
+    if status is not None and stat.S_ISDIR(status.st_mode):
+        return f"{name}: it is a folder — give the name of a file inside it"
+    if status is not None and not stat.S_ISREG(status.st_mode):
+        return (f"{name}: it is not a regular file (a pipe or a device?), and writing would "
+                "replace it — give the path of a file")
+    return _writable_folder_problem(name, Path(os.path.abspath(path)).parent)
+
+
+def folder_problem(path: Path) -> str | None:
+    """Why ``path`` cannot be (or become) a folder to write files in, or None.
+
+    >>> import tempfile
+    >>> output_file = Path(tempfile.mkdtemp()) / "notes.txt"
+    >>> _ = output_file.write_text("")
+    >>> folder_problem(output_file.parent / "charts") is None
+    True
+    >>> folder_problem(output_file)  # doctest: +ELLIPSIS
+    '...notes.txt: it is a file, not a folder — give the path of a folder'
+    """
+    name = shown(path)
+    try:
+        if path.exists() and not path.is_dir():
+            return f"{name}: it is a file, not a folder — give the path of a folder"
+    except (OSError, ValueError):
+        return f"{name}: it cannot be used as a folder — give another path"
+    return _writable_folder_problem(name, Path(os.path.abspath(path)))
+
+
+def _writable_folder_problem(name: str, folder: Path) -> str | None:
+    """Why files cannot be written in ``folder`` (made if missing), or None."""
+    while True:  # the nearest folder that exists must be a folder we may write in
+        try:
+            folder_status = folder.stat()
+        except (FileNotFoundError, NotADirectoryError):
+            folder = folder.parent
+            continue
+        except OSError as error:
+            return f"{name}: its folder cannot be used ({_reason(error)}) — give another path"
+        break
+    if not stat.S_ISDIR(folder_status.st_mode):
+        return (f"{name}: {shown(folder)} is a file, not a folder, so nothing can be written "
+                "under it — give another path")
+    if not os.access(folder, os.W_OK | os.X_OK):
+        return f"{name}: {shown(folder)} may not be written to — give a path you may write"
+    return None
+
 
 def write_atomically(path: Path, write: Callable[[Path], None]) -> None:
-    """Call ``write`` on a temporary path beside ``path``, then rename it into place."""
-    path.parent.mkdir(parents=True, exist_ok=True)
+    """Call ``write`` on a temporary path beside ``path``, then rename it into place.
+
+    A path that cannot be written (a folder, a device, a full disk) is a FileProblem, and
+    no temporary file is left behind."""
+    problem = output_problem(path)
+    if problem is not None:
+        raise FileProblem(problem, _cause(problem))
     tmp = path.with_name(f".{path.stem}.{os.getpid()}.{secrets.token_hex(4)}{path.suffix}")
     try:
+        path.parent.mkdir(parents=True, exist_ok=True)
         write(tmp)
         os.replace(tmp, path)
+    except OSError as error:
+        with contextlib.suppress(OSError):
+            tmp.unlink(missing_ok=True)
+        fix = ("free some space" if error.errno in (errno.ENOSPC, errno.EFBIG, errno.EDQUOT)
+               else "give another path")
+        raise FileProblem(f"{shown(path)}: could not be written ({_reason(error)}) — "
+                          f"{fix}", _reason(error)) from None
     except BaseException:
-        tmp.unlink(missing_ok=True)
+        with contextlib.suppress(OSError):
+            tmp.unlink(missing_ok=True)
         raise
 
 
@@ -38,3 +219,48 @@ def write_text_atomically(path: Path, text: str) -> None:
         tmp.write_text(text, encoding="utf-8")
 
     write_atomically(path, write)
+
+
+def _temporary_name(path: Path) -> re.Pattern[str]:
+    """The names :func:`write_atomically` gives the temporary files of ``path``."""
+    return re.compile(rf"\.{re.escape(path.stem)}\.(\d{{1,10}})\.[0-9a-f]{{8}}"
+                      rf"{re.escape(path.suffix)}")
+
+
+def _running(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (OSError, OverflowError):
+        return True  # someone else's process, or a number we cannot ask about: leave it
+    return True
+
+
+def remove_orphans(path: Path) -> list[Path]:
+    """Delete the temporary files of ``path`` left by writers that are no longer running
+    (a save interrupted by a crash or a power cut); return what was removed.
+
+    >>> import tempfile
+    >>> folder = Path(tempfile.mkdtemp())
+    >>> (folder / ".progress.999999999.0123abcd.json").write_text("{")
+    1
+    >>> [p.name for p in remove_orphans(folder / "progress.json")]
+    ['.progress.999999999.0123abcd.json']
+    """
+    pattern = _temporary_name(path)
+    removed: list[Path] = []
+    try:
+        candidates = [p for p in path.parent.iterdir() if pattern.fullmatch(p.name)]
+    except OSError:
+        return removed
+    for candidate in candidates:
+        match = pattern.fullmatch(candidate.name)
+        if match is None or _running(int(match.group(1))):
+            continue
+        with contextlib.suppress(OSError):
+            candidate.unlink()
+            removed.append(candidate)
+    return removed

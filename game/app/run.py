@@ -30,7 +30,14 @@ from pathlib import Path
 
 import pygame
 
-from game.app.files import write_atomically, write_text_atomically
+from game.app.files import (
+    FileProblem,
+    output_problem,
+    read_small_text,
+    shown,
+    write_atomically,
+    write_text_atomically,
+)
 from game.app.frame import render_frame
 from game.app.report import Timing, build_report
 from game.levels import FIRST_LEVEL, LevelError, load_level
@@ -42,6 +49,9 @@ from game.sim.world import Event, Measure
 HEADLESS_TICK_LIMIT = 60 * 60 * 60  # an hour of game time: a run with no --ticks still ends
 TARGET_FPS = 60
 EXIT_OK, EXIT_BAD_FILE, EXIT_USAGE = 0, 1, 2
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, what shells report for a program stopped by Ctrl-C
+MAX_SCRIPT_BYTES = 4 * 1024 * 1024  # an input script: 300,000 events or more
+OUTPUT_OPTIONS = ("record", "report", "screenshot")
 
 KEYS: dict[Action, tuple[int, ...]] = {
     Action.LEFT: (pygame.K_LEFT, pygame.K_a),
@@ -82,6 +92,7 @@ class Run:
     args: argparse.Namespace
     recorder: Recorder = field(default_factory=Recorder)
     timing: Timing = field(default_factory=Timing)
+    output_failed: bool = False  # a --record, --report or --screenshot could not be written
 
     def tick(self, player: Actions = NOTHING) -> list[Event]:
         """One simulation tick with input from the script, else what the player holds."""
@@ -95,7 +106,7 @@ class Run:
     @property
     def last_update_ms(self) -> float:
         """How long the last tick took, for the debug overlay (0 before the first)."""
-        return self.timing.update_s[-1] * 1000.0 if self.timing.update_s else 0.0
+        return self.timing.last_update_s * 1000.0
 
     def finished(self) -> bool:
         ticks = self.args.ticks
@@ -103,29 +114,49 @@ class Run:
                 or (ticks is not None and self.campaign.ticks >= ticks))
 
     def write_outputs(self, frame: pygame.Surface | None) -> None:
+        """Write what the options ask for; a file that cannot be written is one sentence on
+        stderr (and exit status 1), and the others are still written."""
+        writes: list[Callable[[], None]] = []
         if self.args.record:
-            write_text_atomically(self.args.record, self.recorder.text())
+            text = self.recorder.text()
+            writes.append(lambda: write_text_atomically(self.args.record, text))
         if self.args.report:
             report = build_report(self.campaign, level_label(self.campaign.world.level.path),
                                   self.timing)
-            write_text_atomically(self.args.report, json.dumps(report, indent=2) + "\n")
+            text_report = json.dumps(report, indent=2) + "\n"
+            writes.append(lambda: write_text_atomically(self.args.report, text_report))
         if self.args.screenshot and frame is not None:
-            write_atomically(self.args.screenshot, lambda tmp: pygame.image.save(frame, str(tmp)))
+            writes.append(lambda: write_atomically(
+                self.args.screenshot, lambda tmp: pygame.image.save(frame, str(tmp))))
+        for write in writes:
+            try:
+                write()
+            except (FileProblem, pygame.error) as error:
+                print(error, file=sys.stderr)
+                self.output_failed = True
+
+
+def _output_problems(args: argparse.Namespace) -> list[str]:
+    """Every output option whose path cannot take a file, before the run starts."""
+    return [f"--{option}: {problem}" for option in OUTPUT_OPTIONS
+            if (path := getattr(args, option)) is not None
+            and (problem := output_problem(path)) is not None]
 
 
 def run(args: argparse.Namespace, play_in_window: Callable[[Run], int]) -> int:
     """Run the game as the options ask, in a window through ``play_in_window`` unless
     headless; return the exit status."""
+    problems = _output_problems(args)
+    if problems:
+        return fail("\n".join(problems), EXIT_BAD_FILE)
     script: InputScript | None = None
     if args.inputs:
         try:
-            script = InputScript.load(args.inputs)
-        except OSError as error:
-            return fail(f"{args.inputs}: cannot read the input script ({error.strerror}) — "
-                        "check the path", EXIT_BAD_FILE)
-        except UnicodeDecodeError:
-            return fail(f"{args.inputs}: the input script is not UTF-8 text — "
-                        "save it as plain text", EXIT_BAD_FILE)
+            script = InputScript.parse(
+                read_small_text(args.inputs, MAX_SCRIPT_BYTES, "the input script"),
+                shown(args.inputs))
+        except FileProblem as error:
+            return fail(str(error), EXIT_BAD_FILE)
         except InputScriptError as error:
             return fail(str(error), EXIT_USAGE)
     first_level = args.level or FIRST_LEVEL
@@ -141,29 +172,44 @@ def run(args: argparse.Namespace, play_in_window: Callable[[Run], int]) -> int:
     def loader(path: Path) -> Level:
         return load_level(path, images=needs_pictures)
 
+    game_run: Run | None = None
     try:
         # The report's max_penetration_px is measured only when a report is written; the
         # overlay's query log is kept only while the overlay is on.
         measure = Measure(penetration=args.report is not None, queries=bool(args.debug))
         campaign = Campaign(first_level, loader=loader, measure=measure)
         game_run = Run(campaign, script, args)
-        if args.headless:
-            return run_headless(game_run)
-        return play_in_window(game_run)
+        status = run_headless(game_run) if args.headless else play_in_window(game_run)
+        return EXIT_BAD_FILE if game_run.output_failed else status
     except LevelError as error:
         return fail(str(error), EXIT_BAD_FILE)
+    except KeyboardInterrupt:  # Ctrl-C: keep what the run has done so far
+        if game_run is not None and not args.headless:
+            game_run.write_outputs(None)
+        print("stopped by Ctrl-C", file=sys.stderr)
+        return EXIT_INTERRUPTED
     finally:
         pygame.quit()
 
 
 def run_headless(game_run: Run) -> int:
-    """Step without a window until the run ends; render one frame if a screenshot is asked."""
+    """Step without a window until the run ends; render one frame if a screenshot is asked.
+
+    Ctrl-C ends the run early, and its report, recording and screenshot are still written
+    (exit status 130)."""
     limit = game_run.args.ticks if game_run.args.ticks is not None else HEADLESS_TICK_LIMIT
-    while not game_run.finished() and game_run.campaign.ticks < limit:
-        game_run.tick()
+    status = EXIT_OK
+    try:
+        while not game_run.finished() and game_run.campaign.ticks < limit:
+            game_run.tick()
+    except KeyboardInterrupt:
+        status = EXIT_INTERRUPTED
     frame = None
     if game_run.args.screenshot:
         frame = render_frame(game_run.campaign, debug=game_run.args.debug,
                              update_ms=game_run.last_update_ms)
     game_run.write_outputs(frame)
-    return EXIT_OK
+    if status == EXIT_INTERRUPTED:
+        print("stopped by Ctrl-C; the report and recording hold the run so far",
+              file=sys.stderr)
+    return status

@@ -37,7 +37,7 @@ from datetime import datetime
 from pathlib import Path
 from typing import Any, NamedTuple, TypeVar
 
-from game.app.files import write_text_atomically
+from game.app.files import FileProblem, read_small_text, remove_orphans, write_text_atomically
 from game.sim.campaign import Campaign
 from game.sim.world import Event, EventKind, World
 
@@ -45,7 +45,10 @@ APP_DIR_NAME = "tile-hopper"
 PROGRESS_FILE = "progress.json"
 PROGRESS_VERSION = 1  # written into the file; bump it if its layout ever changes
 BACKUP_STAMP = "%Y%m%d-%H%M%S"  # progress.json.corrupt-20250131-142501
+MAX_SAVE_BYTES = 1024 * 1024  # settings and progress are a few kB; more is not ours
 MAX_PROBLEMS_SHOWN = 3  # a report names at most this many bad entries, then counts the rest
+MAX_QUOTED_CHARS = 40  # a bad value is quoted back at most this long
+MAX_COUNT = 10**12  # a tick count or coin count larger than this is not a real one
 
 T = TypeVar("T")
 Parse = Callable[[Any], tuple[T, list[str]]]
@@ -101,19 +104,30 @@ class JsonFile:
         """Read and ``parse`` the file; on any problem keep it aside and explain.
 
         ``parse`` turns the decoded JSON into a value and a list of what it had to drop or
-        replace. No file yet is not a problem: the result is ``default()``.
+        replace. No file yet is not a problem: the result is ``default()``. Temporary files
+        left beside it by a save that was interrupted are removed first.
         """
+        remove_orphans(self.path)
         try:
-            text = self.path.read_text(encoding="utf-8")
-        except FileNotFoundError:
-            return default(), None
-        except (OSError, UnicodeDecodeError) as error:
+            if not self.path.exists() and not self.path.is_symlink():
+                return default(), None
+            text = read_small_text(self.path, MAX_SAVE_BYTES, "the file")
+        except FileProblem as error:
+            if not self.path.is_file():  # a folder or a pipe: not ours to move aside
+                self.blocked = f"{error}; nothing will be saved over it this session."
+                return default(), self.blocked
+            return default(), self.keep_aside(f"could not be read ({error.reason})")
+        except OSError as error:
             return default(), self.keep_aside(f"could not be read ({_reason(error)})")
         try:
             data = json.loads(text)
         except json.JSONDecodeError as error:
             return default(), self.keep_aside(
                 f"is not valid JSON (line {error.lineno}: {error.msg})")
+        except (ValueError, RecursionError) as error:  # 5,000-digit numbers, deep nesting
+            what = ("nests too deeply" if isinstance(error, RecursionError)
+                    else "holds a number too long to read")
+            return default(), self.keep_aside(f"is not usable JSON (it {what})")
         value, problems = parse(data)
         if problems:
             return value, self.keep_aside(f"could not be used in full ({summarise(problems)})")
@@ -141,9 +155,24 @@ class JsonFile:
             return self.blocked
         try:
             write_text_atomically(self.path, json.dumps(data, indent=2, sort_keys=True) + "\n")
-        except OSError as error:
-            return f"Could not save {self.path} ({_reason(error)}); the previous file is intact."
+        except FileProblem as error:
+            return f"Could not save {self.path} ({error.reason}); the previous file is intact."
         return None
+
+
+def quoted(value: object) -> str:
+    """A decoded JSON value as a message quotes it: as JSON, cut short if long.
+
+    >>> quoted("fast"), quoted([1, 2]), quoted("x" * 500)
+    ('"fast"', '[1, 2]', '"xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx... (502 characters)')
+    """
+    try:
+        text = json.dumps(value)
+    except (ValueError, RecursionError):
+        return "a value too large to show"
+    if len(text) <= MAX_QUOTED_CHARS:
+        return text
+    return f"{text[:MAX_QUOTED_CHARS - 2]}... ({len(text):,} characters)"
 
 
 def _reason(error: OSError | UnicodeDecodeError) -> str:
@@ -194,7 +223,7 @@ class Progress:
         ...                                   "best_ticks": {"a.tmx": 900, "b.tmx": "fast"}})
         >>> sorted(p.unlocked), p.best_ticks, problems
         (['b.tmx'], {'a.tmx': 900}, ['unlocked: 7 is not a level file name', \
-'best_ticks: "b.tmx" has "fast", not a whole number of 0 or more'])
+'best_ticks: "b.tmx" has "fast", not a whole number from 0 to 1,000,000,000,000'])
         """
         if not isinstance(data, dict):
             return cls(), [f"it holds {_json_type(data)}, not an object: nothing was kept"]
@@ -206,7 +235,7 @@ class Progress:
                 if isinstance(name, str) and name:
                     progress.unlocked.add(name)
                 else:
-                    problems.append(f"unlocked: {json.dumps(name)} is not a level file name")
+                    problems.append(f"unlocked: {quoted(name)} is not a level file name")
         else:
             problems.append("unlocked is not a list of level file names")
         for key, table in (("best_ticks", progress.best_ticks),
@@ -219,8 +248,8 @@ class Progress:
                 if _is_count(number):
                     table[level] = number
                 else:
-                    problems.append(f"{key}: {json.dumps(level)} has {json.dumps(number)}, "
-                                    "not a whole number of 0 or more")
+                    problems.append(f"{key}: {quoted(level)} has {quoted(number)}, "
+                                    f"not a whole number from 0 to {MAX_COUNT:,}")
         return progress, problems
 
 
@@ -270,5 +299,6 @@ def _json_type(value: object) -> str:
 
 
 def _is_count(value: object) -> bool:
-    """A whole number of 0 or more; ``True`` is not a number here, though Python says so."""
-    return isinstance(value, int) and not isinstance(value, bool) and value >= 0
+    """A whole number from 0 to MAX_COUNT; ``True`` is not a number here, though Python
+    says so."""
+    return isinstance(value, int) and not isinstance(value, bool) and 0 <= value <= MAX_COUNT

@@ -38,7 +38,7 @@ from typing import Any, TypeVar
 
 import pygame
 
-from game.app.saves import JsonFile, data_dir
+from game.app.saves import JsonFile, data_dir, quoted
 from game.sim.inputs import Action
 
 T = TypeVar("T")
@@ -139,7 +139,7 @@ class Settings:
                 if _is_number(value) and 0.0 <= value <= 1.0:
                     setattr(settings, name, float(value))
                 else:
-                    problems.append(f"{name} is {json.dumps(value)}, not a number from 0 to 1 "
+                    problems.append(f"{name} is {quoted(value)}, not a number from 0 to 1 "
                                     f"(using {getattr(settings, name)})")
         for name in ("fullscreen", "screen_shake"):
             if name not in data:
@@ -147,7 +147,7 @@ class Settings:
             if isinstance(data[name], bool):
                 setattr(settings, name, data[name])
             else:
-                problems.append(f"{name} is {json.dumps(data[name])}, not true or false "
+                problems.append(f"{name} is {quoted(data[name])}, not true or false "
                                 f"(using {json.dumps(getattr(settings, name))})")
         if "keys" in data:  # every action needs a key: the keyboard is always there
             _read_bindings(data["keys"], "keys", settings.keys, _key_name_or_none,
@@ -200,14 +200,14 @@ def _read_bindings(data: object, section: str, bindings: dict[str, list[T]],
         if action not in actions:
             continue
         if not isinstance(entries, list):
-            problems.append(f"{section}.{action} is {json.dumps(entries)}, not a list "
+            problems.append(f"{section}.{action} is {quoted(entries)}, not a list "
                             f"(using {_listed(bindings[action])})")
             continue
         valid: list[T] = []
         for entry in entries:
             checked = check(entry)
             if checked is None:
-                problems.append(f"{section}.{action}: {json.dumps(entry)} is not a {what} "
+                problems.append(f"{section}.{action}: {quoted(entry)} is not a {what} "
                                 "(left out)")
             else:
                 valid.append(checked)

@@ -48,6 +48,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--check", action="store_true",
                         help="exit with status 1 if any target fails")
     args = parser.parse_args(argv)
+    from game.app.files import folder_problem
+
+    if (problem := folder_problem(args.out)) is not None:
+        parser.error(f"--out: {problem}")
     sizes = QUICK if args.quick else FULL
     print(f"game.bench: {sizes.name} run, writing to {args.out}", flush=True)
     _, checked = run(sizes, args.out, echo=lambda line: print(line, flush=True))

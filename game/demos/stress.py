@@ -28,9 +28,14 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
+from game.app.arguments import Parser, run_command, whole_number
+from game.app.files import FileProblem, output_problem, write_atomically
 from game.demos.crates import CrateScene, CrateTuning
 from game.sim.tuning import TICK_S
 
+MAX_CRATES = 20_000  # about 80 MB and 0.15 s a tick on one core here; more is a typo
+MAX_TICKS = 100_000
+EXIT_BAD_FILE = 1
 ARENA_PX_PER_CRATE = 48.0 * 48.0  # room per crate, so a crowd has space to move
 ASPECT = 16 / 9
 
@@ -82,11 +87,20 @@ def screenshot(scene: CrateScene, path: Path) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m game.demos.stress", description=__doc__)
-    parser.add_argument("--crates", type=int, nargs="+", default=[8, 100, 2000])
-    parser.add_argument("--ticks", type=int, default=60)
+    return run_command(lambda: _main(argv))
+
+
+def _main(argv: list[str] | None) -> int:
+    parser = Parser(prog="python -m game.demos.stress", description=__doc__,
+                    formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--crates", type=whole_number(1, MAX_CRATES, "crates"), nargs="+",
+                        default=[8, 100, 2000], metavar="N")
+    parser.add_argument("--ticks", type=whole_number(1, MAX_TICKS, "ticks"), default=60,
+                        metavar="N")
     parser.add_argument("--screenshot", type=Path, help="draw the last scene to this PNG")
     args = parser.parse_args(argv)
+    if args.screenshot and (problem := output_problem(args.screenshot)) is not None:
+        parser.error(f"--screenshot: {problem}")
     for count in args.crates:
         result = run(count, args.ticks)
         print(f"{count:6d} crates: {result.method:12s} {result.pair_tests:9,d} pair tests "
@@ -95,7 +109,11 @@ def main(argv: list[str] | None = None) -> int:
         scene = scene_for(args.crates[-1])
         for _ in range(args.ticks):
             scene.step(TICK_S)
-        screenshot(scene, args.screenshot)
+        try:
+            write_atomically(args.screenshot, lambda tmp: screenshot(scene, tmp))
+        except FileProblem as error:
+            print(error, file=sys.stderr)
+            return EXIT_BAD_FILE
     return 0
 
 

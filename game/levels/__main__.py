@@ -22,6 +22,8 @@ from pathlib import Path
 
 from game.levels.loader import check_level
 
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
+
 
 def _maps(path: Path) -> Iterator[tuple[Path, str | None]]:
     """The maps a command-line path stands for, or the path and why it stands for none."""
@@ -87,6 +89,15 @@ def types(write: bool) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """Run a command; Ctrl-C stops it with exit status 130 and one line, not a traceback."""
+    try:
+        return _main(argv)
+    except KeyboardInterrupt:
+        print("stopped by Ctrl-C", file=sys.stderr)
+        return EXIT_INTERRUPTED
+
+
+def _main(argv: list[str] | None) -> int:
     for stream in (sys.stdout, sys.stderr):  # odd bytes in a file name must not crash print
         if hasattr(stream, "reconfigure"):
             stream.reconfigure(errors="backslashreplace")

@@ -29,9 +29,6 @@ from pathlib import Path
 from typing import Any
 
 import pygame
-import pytmx
-import pytmx.pytmx
-import pytmx.util_pygame
 
 from game.levels.errors import Findings
 from game.levels.header import MapHeader
@@ -80,6 +77,10 @@ def clean_map(header: MapHeader, tilesets: Tilesets,
 def parse(path: Path, document: ET.Element, images: bool, findings: Findings) -> Any:
     """pytmx's TiledMap of the clean document; with ``images``, tile images are loaded
     (which needs ``pygame.display.set_mode`` first)."""
+    import pytmx  # here, not at the top: only a load that gets this far pays for it
+    import pytmx.pytmx
+    import pytmx.util_pygame
+
     loader = pytmx.util_pygame.pygame_image_loader if images else pytmx.pytmx.default_image_loader
     try:
         tmx = pytmx.TiledMap(image_loader=loader, allow_duplicate_names=True)

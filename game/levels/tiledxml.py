@@ -65,11 +65,18 @@ def _read_bytes(path: Path, findings: Findings, where: str, kind: Kind) -> bytes
     except (OSError, ValueError) as error:
         findings.fail(where, f"the {what} cannot be opened ({_reason(error)})",
                       "check the path and that you may read the file")
+    try:
+        status = os.fstat(descriptor)
+    except OSError as error:
+        os.close(descriptor)
+        findings.fail(where, f"the {what} cannot be read ({_reason(error)})",
+                      "check that you may read the file")
+    if stat.S_ISDIR(status.st_mode):
+        os.close(descriptor)  # open() would refuse a folder with a traceback
+        findings.fail(where, f"this is a folder, not a {kind}",
+                      f"give the path of a {TMX_SUFFIX[kind]} file")
     with os.fdopen(descriptor, "rb") as stream:
-        mode, size = os.fstat(descriptor).st_mode, os.fstat(descriptor).st_size
-        if stat.S_ISDIR(mode):
-            findings.fail(where, f"{path} is a folder, not a {kind}",
-                          f"give the path of a {TMX_SUFFIX[kind]} file")
+        mode, size = status.st_mode, status.st_size
         if not stat.S_ISREG(mode):
             findings.fail(where, f"the {what} is not a regular file (a device or a pipe?)",
                           f"give the path of a {TMX_SUFFIX[kind]} file saved by Tiled")

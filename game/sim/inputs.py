@@ -39,6 +39,8 @@ class Action(Enum):
 Actions = frozenset[Action]
 NOTHING: Actions = frozenset()
 ACTION_NAMES = ", ".join(a.value for a in Action)
+MAX_TICK_DIGITS = 12  # a million years of ticks: longer is a typo, not a run
+MAX_QUOTED_CHARS = 40  # a message quotes at most this much of a bad line
 
 
 class InputScriptError(Exception):
@@ -55,20 +57,38 @@ class InputEvent:
         return f"{self.tick} {'+' if self.pressed else '-'}{self.action.value}"
 
 
+def _excerpt(text: str) -> str:
+    """``text`` quoted for a message, cut short if long.
+
+    >>> _excerpt("fly"), _excerpt("9" * 5000)
+    ("'fly'", "'9999999999999999999999999999999999999999…' (5,000 characters)")
+    """
+    if len(text) <= MAX_QUOTED_CHARS:
+        return repr(text)
+    return f"{text[:MAX_QUOTED_CHARS]!r}"[:-1] + f"…' ({len(text):,} characters)"
+
+
 def _parse_line(text: str, where: str) -> InputEvent:
     parts = text.split()
     if len(parts) != 2:
-        raise InputScriptError(f"{where}: expected '<tick> <+|-><action>', got {text!r}")
+        raise InputScriptError(f"{where}: expected '<tick> <+|-><action>', "
+                               f"got {_excerpt(text)}")
     tick_text, change = parts
-    if not tick_text.isdigit():
-        raise InputScriptError(f"{where}: the tick must be a whole number >= 0, got {tick_text!r}")
+    if not (tick_text.isascii() and tick_text.isdigit()):
+        raise InputScriptError(f"{where}: the tick must be a whole number >= 0, "
+                               f"got {_excerpt(tick_text)}")
+    if len(tick_text.lstrip("0")) > MAX_TICK_DIGITS:
+        raise InputScriptError(f"{where}: the tick {_excerpt(tick_text)} is more than "
+                               f"{MAX_TICK_DIGITS} digits long — no run lasts that long")
     if change[:1] not in ("+", "-"):
-        raise InputScriptError(f"{where}: the action must start with + or -, got {change!r}")
+        raise InputScriptError(f"{where}: the action must start with + or -, "
+                               f"got {_excerpt(change)}")
     try:
         action = Action(change[1:])
     except ValueError:
         raise InputScriptError(
-            f"{where}: unknown action {change[1:]!r} — use one of {ACTION_NAMES}") from None
+            f"{where}: unknown action {_excerpt(change[1:])} — use one of {ACTION_NAMES}"
+        ) from None
     return InputEvent(int(tick_text), change[0] == "+", action)
 
 

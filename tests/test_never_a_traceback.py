@@ -1,0 +1,322 @@
+"""Every command turns every bad path, file and number into one sentence and its exit status.
+
+The cases are those a downloaded level or a mistyped command can bring: folders, pipes and
+devices where a file belongs, outputs that cannot be written, numbers thousands of digits
+long, JSON nested a hundred thousand deep, Ctrl-C. A property test then throws random
+bytes, paths and numbers at the commands and the loaders.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from game.app import cli
+from game.app.saves import JsonFile, Progress
+from game.app.settings import Settings
+from game.bench import main as bench_main
+from game.demos import stress
+from game.levels import FIRST_LEVEL, LevelError, check_level, load_level
+from game.levels.__main__ import main as levels_main
+from game.sim.campaign import Campaign
+from game.sim.inputs import Action
+
+ROOT = Path(__file__).resolve().parent.parent
+SCRIPT = ROOT / "tests/scripts/01-first-steps.txt"
+ENV = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy"}
+MAX_MESSAGE_CHARS = 1_000  # one sentence, with a path in it, is shorter than this
+FIFO_TIMEOUT_S = 60  # generous for a busy machine; a run that waits on a pipe never ends
+
+
+def outcome(command: Callable[[list[str]], int], args: list[str],
+            capsys: pytest.CaptureFixture[str]) -> tuple[int, str]:
+    """Run a command in this process: its exit status and what it said on stderr.
+
+    An exception escaping the command fails the test: that would be a traceback."""
+    try:
+        status = command(args)
+    except SystemExit as leaving:  # argparse's usage errors
+        status = int(leaving.code or 0)
+    return status, capsys.readouterr().err
+
+
+def assert_one_sentence(status: int, err: str, expected: int) -> None:
+    assert status == expected, err
+    assert "Traceback" not in err
+    assert 0 < len(err) <= MAX_MESSAGE_CHARS, err[:MAX_MESSAGE_CHARS]
+
+
+@pytest.fixture
+def fifo(tmp_path: Path) -> Iterator[Path]:
+    path = tmp_path / "pipe.txt"
+    os.mkfifo(path)
+    yield path
+
+
+@pytest.fixture
+def a_file(tmp_path: Path) -> Path:
+    path = tmp_path / "notes.txt"
+    path.write_text("not a folder\n", encoding="utf-8")
+    return path
+
+
+# -- python -m game ------------------------------------------------------------------------
+
+def test_a_pipe_given_as_input_script_is_refused_without_waiting(
+        fifo: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    status, err = outcome(cli.main, ["--headless", "--ticks", "5", "--inputs", str(fifo)],
+                          capsys)
+    assert_one_sentence(status, err, 1)
+    assert "not a regular file" in err
+
+
+@pytest.mark.parametrize("device", ["/dev/zero", "/dev/null"])
+def test_a_device_given_as_input_script_is_refused(
+        device: str, capsys: pytest.CaptureFixture[str]) -> None:
+    if not Path(device).exists():
+        pytest.skip(f"{device} is not on this system")
+    status, err = outcome(cli.main, ["--headless", "--ticks", "5", "--inputs", device], capsys)
+    assert_one_sentence(status, err, 1)
+
+
+@pytest.mark.parametrize("option", ["--level", "--inputs"])
+def test_a_folder_where_a_file_belongs_is_one_sentence(
+        option: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    status, err = outcome(cli.main, ["--headless", "--ticks", "5", option, str(tmp_path)],
+                          capsys)
+    assert_one_sentence(status, err, 1)
+    assert "folder" in err
+
+
+@pytest.mark.parametrize("option", ["--report", "--record", "--screenshot"])
+def test_an_output_at_a_folder_is_refused_before_the_run(
+        option: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    status, err = outcome(cli.main, ["--headless", "--ticks", "5", option, str(tmp_path)],
+                          capsys)
+    assert_one_sentence(status, err, 1)
+    assert "is a folder" in err
+
+
+@pytest.mark.parametrize("option", ["--report", "--record", "--screenshot"])
+def test_an_output_under_a_file_is_refused_before_the_run(
+        option: str, a_file: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    status, err = outcome(cli.main, ["--headless", "--ticks", "5", option,
+                                     str(a_file / "out.png")], capsys)
+    assert_one_sentence(status, err, 1)
+    assert "is a file, not a folder" in err
+
+
+def test_an_output_on_a_device_is_refused_and_the_device_left_alone(
+        fifo: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    status, err = outcome(cli.main, ["--headless", "--ticks", "5", "--report", str(fifo)],
+                          capsys)
+    assert_one_sentence(status, err, 1)
+    assert fifo.is_fifo()  # a rename would have replaced the pipe with a file
+
+
+def test_an_output_that_fails_at_the_end_is_a_sentence_and_the_others_are_written(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    def full_disk(self: Path, *args: object, **kwargs: object) -> int:
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(Path, "write_text", full_disk)  # the report and the recording
+    shot = tmp_path / "shot.png"
+    status, err = outcome(cli.main, ["--headless", "--ticks", "5", "--report",
+                                     str(tmp_path / "r.json"), "--screenshot", str(shot)],
+                          capsys)
+    assert status == 1 and "No space left on device" in err and "Traceback" not in err
+    assert shot.is_file()
+    assert [p.name for p in tmp_path.iterdir()] == ["shot.png"]  # no temporary file left
+
+
+def test_an_input_script_tick_of_5000_digits_is_a_bad_line(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    script = tmp_path / "script.txt"
+    script.write_text("9" * 5000 + " +right\n", encoding="utf-8")
+    status, err = outcome(cli.main, ["--headless", "--ticks", "5", "--inputs", str(script)],
+                          capsys)
+    assert_one_sentence(status, err, 2)
+    assert "line 1" in err and "5,000 characters" in err
+
+
+def test_ticks_of_5000_digits_are_bad_usage(capsys: pytest.CaptureFixture[str]) -> None:
+    status, err = outcome(cli.main, ["--headless", "--ticks", "9" * 5000], capsys)
+    assert status == 2 and "5,000 characters" in err and len(err) < MAX_MESSAGE_CHARS
+
+
+def test_ctrl_c_exits_130_and_a_headless_run_still_writes_its_report(tmp_path: Path) -> None:
+    report, record = tmp_path / "report.json", tmp_path / "record.txt"
+    process = subprocess.Popen(
+        [sys.executable, "-m", "game", "--headless", "--ticks", "100000000", "--inputs",
+         str(SCRIPT), "--report", str(report), "--record", str(record)],
+        cwd=ROOT, env=ENV, stderr=subprocess.PIPE, text=True,
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    deadline = time.monotonic() + FIFO_TIMEOUT_S
+    time.sleep(1.0)
+    while process.poll() is None and time.monotonic() < deadline:
+        process.send_signal(signal.SIGINT)  # again until the run is under way and stops
+        try:
+            process.wait(timeout=2.0)
+        except subprocess.TimeoutExpired:
+            continue
+    _, err = process.communicate(timeout=FIFO_TIMEOUT_S)
+    assert process.returncode == 130, err
+    assert "Traceback" not in err and "Ctrl-C" in err
+    if report.exists():  # interrupted once the run was going: it wrote what it had
+        data = json.loads(report.read_text(encoding="utf-8"))
+        assert data["outcome"] == "running"
+        assert record.read_text(encoding="utf-8").startswith("#")
+
+
+# -- the stress scene, the bench and the checker ---------------------------------------------
+
+@pytest.mark.parametrize("args", [["--crates", "-5"], ["--ticks", "-1"], ["--ticks", "0"],
+                                  ["--crates", "9" * 5000], ["--crates", "1e9"]])
+def test_the_stress_scene_refuses_bad_numbers(args: list[str],
+                                              capsys: pytest.CaptureFixture[str]) -> None:
+    status, err = outcome(stress.main, args, capsys)
+    assert status == 2 and "not a whole number" in err and len(err) < MAX_MESSAGE_CHARS
+
+
+def test_the_bench_refuses_a_file_as_its_output_folder(
+        a_file: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    status, err = outcome(bench_main, ["--quick", "--out", str(a_file)], capsys)
+    assert status == 2 and "not a folder" in err
+
+
+def test_the_checker_says_a_pipe_is_not_a_map(fifo: Path,
+                                              capsys: pytest.CaptureFixture[str]) -> None:
+    status = levels_main(["check", str(fifo)])
+    out = capsys.readouterr().out
+    assert status == 1 and "not a regular file" in out
+
+
+# -- the player's files ----------------------------------------------------------------------
+
+@pytest.mark.parametrize("text", [
+    "[" * 100_000 + "]" * 100_000,
+    '{"best_ticks": {"a.tmx": ' + "9" * 5000 + "}}",
+    '{"music_volume": ' + "1" * 5000 + "}",
+])
+def test_a_save_of_deep_json_or_huge_numbers_is_kept_aside(tmp_path: Path, text: str) -> None:
+    for parse, default in ((Settings.from_json, Settings), (Progress.from_json, Progress)):
+        path = tmp_path / "save.json"
+        path.write_text(text, encoding="utf-8")
+        value, problem = JsonFile(path).load(parse, default)  # type: ignore[arg-type]
+        assert value == default()
+        assert problem is not None and len(problem) < MAX_MESSAGE_CHARS
+
+
+def test_a_save_that_is_a_pipe_is_not_waited_for(fifo: Path) -> None:
+    settings, problem = JsonFile(fifo).load(Settings.from_json, Settings)
+    assert settings == Settings()
+    assert problem is not None and "not a regular file" in problem
+    assert fifo.is_fifo()
+
+
+# -- random input: a sentence and an exit status, never an exception --------------------------
+
+def _paths(base: Path) -> list[str]:
+    """Paths of every awkward kind, made under ``base``."""
+    folder = base / "folder"
+    folder.mkdir(exist_ok=True)
+    plain = base / "plain.txt"
+    plain.write_text("0 +right\n", encoding="utf-8")
+    pipe = base / "pipe"
+    if not pipe.exists():
+        os.mkfifo(pipe)
+    level = base / "level.tmx"  # outputs may land on any of these: all are in ``base``
+    level.write_bytes(FIRST_LEVEL.read_bytes())
+    return [str(folder), str(plain), str(plain / "under.txt"), str(pipe), "/dev/zero",
+            str(base / "missing" / "deep.txt"), str(base / ("long" * 2000)),
+            str(base / "nul\0byte"), "", str(level)]
+
+
+OPTIONS = ["--level", "--inputs", "--report", "--record", "--screenshot"]
+DIGITS = st.tuples(st.sampled_from(["", "-", "+"]), st.text("0123456789", min_size=1,
+                                                               max_size=6000))
+NUMBERS = st.one_of(st.integers().map(str), DIGITS.map("".join), st.floats().map(repr),
+                    st.text(max_size=30))
+
+
+@settings(max_examples=40, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(choices=st.lists(st.tuples(st.sampled_from(OPTIONS), st.integers(0, 9)), max_size=3),
+       ticks=NUMBERS, content=st.binary(max_size=2000))
+def test_the_game_answers_random_paths_numbers_and_bytes_with_a_status(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        choices: list[tuple[str, int]], ticks: str, content: bytes) -> None:
+    paths = _paths(tmp_path)
+    (tmp_path / "plain.txt").write_bytes(content)  # random bytes as a script or a level
+    args = ["--headless", "--ticks", ticks]
+    for option, which in choices:
+        args += [option, paths[which]]
+    status, err = outcome(cli.main, args, capsys)
+    assert status in (0, 1, 2), err
+    assert "Traceback" not in err
+    assert status == 0 or len(err) <= 4 * MAX_MESSAGE_CHARS  # a usage line and a sentence
+    assert Path("/dev/zero").is_char_device() or not Path("/dev/zero").exists()
+
+
+@settings(max_examples=60, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(content=st.binary(max_size=3000))
+def test_random_bytes_as_a_map_or_a_save_never_raise(tmp_path: Path, content: bytes) -> None:
+    level = tmp_path / "level.tmx"
+    level.write_bytes(content)
+    findings = check_level(level)
+    assert findings.errors
+    with pytest.raises(LevelError):
+        load_level(level)
+    save = tmp_path / "settings.json"
+    save.write_bytes(content)
+    JsonFile(save).load(Settings.from_json, Settings)
+
+
+TEMPLATE = FIRST_LEVEL.read_text(encoding="utf-8").replace('source="../assets/tiles.tsx"',
+                                                           'source="tiles.tsx"')
+
+
+@settings(max_examples=60, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(number=NUMBERS, where=st.sampled_from(["csv", "x", "width", "points", "gravity"]))
+def test_random_numbers_anywhere_in_a_map_are_one_sentence_or_a_playable_level(
+        tmp_path: Path, number: str, where: str) -> None:
+    for name in ("tiles.tsx", "tiles.png"):
+        (tmp_path / name).write_bytes((ROOT / "assets" / name).read_bytes())
+    quoted = number.replace("&", "&amp;").replace('"', "&quot;").replace("<", "&lt;")
+    quoted = "".join(c for c in quoted if c.isprintable())
+    text = TEMPLATE
+    if where == "csv":
+        text = text.replace("0,0,0,0,9,", f"0,0,0,0,{quoted},", 1)
+    elif where == "x":
+        text = text.replace('type="Player" x="34"', f'type="Player" x="{quoted}"')
+    elif where == "width":
+        text = text.replace('width="12" height="14"', f'width="{quoted}" height="14"')
+    elif where == "gravity":
+        text = text.replace("</properties>", f'<property name="gravity" type="float" '
+                            f'value="{quoted}"/></properties>', 1)
+    else:
+        text = text.replace("</map>", '<objectgroup id="90" name="p"><object id="900" '
+                            f'type="Platform" x="0" y="0"><polyline points="0,0 {quoted},0"/>'
+                            "</object></objectgroup></map>")
+    path = tmp_path / "level.tmx"
+    path.write_text(text.replace('value="02-over-the-gaps.tmx"', 'value=""'), encoding="utf-8")
+    errors = check_level(path).errors
+    for problem in errors:
+        assert len(str(problem)) <= MAX_MESSAGE_CHARS
+    if not errors:  # what the checker passes, the game plays
+        campaign = Campaign(path, loader=load_level)
+        for _ in range(60):
+            campaign.tick(frozenset({Action.RIGHT, Action.JUMP}))
