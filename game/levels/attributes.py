@@ -8,7 +8,7 @@ What it teaches: parse once, at the edge, into the type the game needs (a finite
 whole number within limits), and say which attribute was wrong and where.
 
 >>> from pathlib import Path
->>> from game.levels.errors import Findings
+>>> from game.levels.errors import Findings, excerpt
 >>> findings = Findings(Path("a.tmx"))
 >>> number({"x": "12.5"}, "x", findings, "object #1 ''")
 12.5
@@ -26,8 +26,9 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
-from game.levels.errors import Findings
+from game.levels.errors import Findings, excerpt
 
+MAX_NUMBER_CHARS = 400  # longer than any number Tiled writes
 FIX_NUMBER = "move or resize it in Tiled, or type an ordinary number in its Properties"
 
 
@@ -37,6 +38,8 @@ def parse_number(text: str) -> float | None:
     >>> parse_number(" 3 "), parse_number("inf"), parse_number("1e400"), parse_number("x")
     (3.0, None, None, None)
     """
+    if len(text) > MAX_NUMBER_CHARS:  # float() of a megabyte of digits takes its time
+        return None
     try:
         value = float(text)
     except ValueError:
@@ -55,7 +58,7 @@ def number(attributes: Mapping[str, str], name: str, findings: Findings, where: 
         return default
     value = parse_number(text)
     if value is None:
-        findings.fail(where, f"{name} is {text!r}, not a finite number", FIX_NUMBER)
+        findings.fail(where, f"{name} is {excerpt(text)}, not a finite number", FIX_NUMBER)
     return value
 
 
@@ -65,7 +68,7 @@ def whole(attributes: Mapping[str, str], name: str, findings: Findings, where: s
     value = number(attributes, name, findings, where,
                    None if default is None else float(default))
     if value != int(value) or not low <= value <= high:
-        findings.fail(where, f"{name} is {attributes.get(name)!r}, not a whole number "
+        findings.fail(where, f"{name} is {excerpt(attributes.get(name))}, not a whole number "
                       f"from {low} to {high}",
                       "open the file in Tiled and save it again, or undo the hand edit")
     return int(value)

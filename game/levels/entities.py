@@ -32,6 +32,7 @@ from game.sim.tilegrid import TileGrid, TileKind
 from game.sim.tuning import Tuning
 
 DEFAULT_COIN_PX = 8
+MIN_SIZE_PX = 1.0  # a box thinner than a pixel slips between the grid's whole-pixel faces
 BODY_SHAPES = ("rectangle", "point", "ellipse", "tile")  # what a body's box can come from
 CLASS_NAMES = ", ".join(cls.name for cls in OBJECT_CLASSES)
 
@@ -91,6 +92,11 @@ def _box(o: MapObject, cls: TiledClass, point_size: tuple[float, float],
     if o.box.w <= 0 or o.box.h <= 0:
         findings.error(o.place, f"the {cls.name} has no area",
                        "draw it as a point or as a rectangle with a size")
+        return None
+    if o.box.w < MIN_SIZE_PX or o.box.h < MIN_SIZE_PX:
+        findings.error(o.place, f"the {cls.name} is {o.box.w:.3g}x{o.box.h:.3g} px, smaller "
+                       f"than the {MIN_SIZE_PX:g} px a side the game can collide",
+                       "make it at least 1 px wide and tall, or draw it as a point")
         return None
     return o.box
 

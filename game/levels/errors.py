@@ -33,9 +33,32 @@ from pathlib import Path
 from typing import NoReturn
 
 MAX_ERRORS_PER_MAP = 20  # past this many, the rest of the map is not worth reading
+MAX_QUOTED_CHARS = 40  # a value from the file is quoted at most this long
+MAX_PART_CHARS = 300  # the place or the problem of a message, at most
+
+
+def excerpt(value: object) -> str:
+    """A value from a file as a message quotes it: ``repr`` if short, else its start and
+    its length, so a 30 MB attribute is never echoed whole.
+
+    >>> excerpt("12.5"), excerpt("9" * 5000)
+    ("'12.5'", "'99999999999999999999...' (5,000 characters)")
+    """
+    text = value if isinstance(value, str) else str(value)
+    if len(text) <= MAX_QUOTED_CHARS:
+        return repr(value)
+    return f"{text[:MAX_QUOTED_CHARS // 2]!r}"[:-1] + f"...' ({len(text):,} characters)"
+
+
+def _clip(text: str) -> str:
+    """``text`` cut to MAX_PART_CHARS, saying so: the last guard against a flood."""
+    if len(text) <= MAX_PART_CHARS:
+        return text
+    return f"{text[:MAX_PART_CHARS]}... ({len(text):,} characters)"
 
 
 def _sentence(path: Path | str, where: str, problem: str, fix: str, warning: bool) -> str:
+    where, problem = _clip(where), _clip(problem)
     place = f"{where}: " if where else ""
     label = "warning: " if warning else ""
     return f"{path}: {place}{label}{problem} — {fix}"

@@ -40,12 +40,12 @@ from pathlib import Path
 from game.levels import pytmx_bridge
 from game.levels.classes import LEVEL
 from game.levels.entities import build_entities
-from game.levels.errors import Findings, LevelError
+from game.levels.errors import Findings, LevelError, excerpt
 from game.levels.header import MAX_TOTAL_CELLS, MapHeader, read_header
 from game.levels.images import check_image
 from game.levels.layers import LayerNode, walk_layers
 from game.levels.objects import read_objects
-from game.levels.paths import project_root, resolve
+from game.levels.paths import Sandbox, real, resolve, sandbox_for
 from game.levels.properties import Value, read_properties
 from game.levels.solids import build_grid
 from game.levels.templates import Templates
@@ -56,6 +56,7 @@ from game.sim.level import Level, TileLayer
 from game.sim.tuning import Tuning
 
 DecodedLayer = tuple[LayerNode, list[int]]
+MAX_TITLE_CHARS = 60  # what fits on the screen in the level's banner, and then some
 
 
 def _decode_layers(layers: Sequence[LayerNode], header: MapHeader,
@@ -87,9 +88,10 @@ def _is_file(path: Path) -> bool:
         return False
 
 
-def _map_properties(root_properties: dict[str, Value], path: Path,
+def _map_properties(root_properties: dict[str, Value], path: Path, sandbox: Sandbox,
                     findings: Findings) -> dict[str, Value]:
-    """The map's properties, with the ones the game reads checked against their types."""
+    """The map's properties, with the ones the game reads checked against their types, and
+    ``next_level`` checked like every other file the level uses."""
     properties = dict(root_properties)
     for member in LEVEL.members:
         if member.name in properties:
@@ -98,17 +100,31 @@ def _map_properties(root_properties: dict[str, Value], path: Path,
             except ValueError as error:
                 findings.error(f"map property '{member.name}'", str(error),
                                f"set '{member.name}' ({member.doc}) in Map > Map Properties")
-    next_level = properties.get("next_level")
-    if next_level and not _is_file(path.parent / str(next_level)):
-        findings.warn("map property 'next_level'", f"{next_level!r} does not exist",
-                      "pick the next map again in Map > Map Properties")
-    elif next_level and is_json_name(str(next_level)):
-        findings.warn("map property 'next_level'", f"{next_level!r} is a JSON map",
+    title = str(properties.get("title", ""))
+    if len(title) > MAX_TITLE_CHARS:
+        findings.warn("map property 'title'", f"the title is {len(title):,} characters long; "
+                      f"the game shows its first {MAX_TITLE_CHARS}",
+                      "give the level a shorter title in Map > Map Properties")
+        properties["title"] = title[:MAX_TITLE_CHARS]
+    next_level = str(properties.get("next_level") or "")
+    where = "map property 'next_level'"
+    if not next_level:
+        return properties
+    target = resolve(next_level, path.parent, sandbox, findings, where, "next level")
+    if target == real(path):
+        findings.error(where, "the level names itself as the next level, so finishing it "
+                       "would start it again", "pick the level that follows this one, or "
+                       "clear next_level if this is the last")
+    elif is_json_name(next_level):
+        findings.warn(where, f"{excerpt(next_level)} is a JSON map",
                       "save the next map as .tmx and pick that one")
+    elif not _is_file(target):
+        findings.warn(where, f"{excerpt(next_level)} does not exist or is not a file",
+                      "pick the next map again in Map > Map Properties")
     return properties
 
 
-def _check_image_layers(layers: Sequence[LayerNode], path: Path, root: Path,
+def _check_image_layers(layers: Sequence[LayerNode], path: Path, root: Sandbox,
                         findings: Findings, check_images: bool) -> None:
     for layer in layers:
         if layer.kind != "imagelayer":
@@ -148,20 +164,20 @@ def _read(path: Path, findings: Findings, images: bool, check_images: bool,
     # 1. The file, and the grid its header describes.
     root = read_tiled_xml(path, "map", findings)
     header = read_header(root, findings)
-    folder = folder or project_root(path)
+    sandbox = sandbox_for(path, folder)
 
     # 2. Tilesets and tile layers: what collides where.
-    tilesets = read_tilesets(root, path, folder, findings, check_images)
+    tilesets = read_tilesets(root, path, sandbox, findings, check_images)
     layers = walk_layers(root, findings)
     decoded = _decode_layers(layers, header, findings)
     grid = build_grid(header, decoded, tilesets, findings)
-    _check_image_layers(layers, path, folder, findings, check_images)
+    _check_image_layers(layers, path, sandbox, findings, check_images)
 
     # 3. Objects and properties: the spawn, coins, enemies, exits and physics.
-    templates = Templates(path, folder, tilesets, findings, check_images)
+    templates = Templates(path, sandbox, tilesets, findings, check_images)
     objects = read_objects(layers, tilesets, templates, findings)
     properties = _map_properties(read_properties(root, findings, "map properties"), path,
-                                 findings)
+                                 sandbox, findings)
     entities = build_entities(objects, header, grid, tuning, findings)
     findings.raise_errors()
 

@@ -19,13 +19,12 @@ True
 
 from __future__ import annotations
 
-import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 
 from game.collision.aabb import Box
-from game.levels.attributes import number, whole
-from game.levels.errors import Findings
+from game.levels.attributes import number, parse_number, whole
+from game.levels.errors import Findings, excerpt
 from game.levels.layers import LayerNode
 from game.levels.properties import Value, class_name, class_of, read_properties
 from game.levels.templates import Templates
@@ -36,6 +35,7 @@ SHAPES = ("point", "ellipse", "polygon", "polyline", "text", "capsule")
 FIX_PLACE = "move or resize the object in Tiled, or type ordinary numbers in its Properties"
 MAX_COORDINATE_PX = 1e9  # pygame Rects hold 32-bit integers
 MAX_OBJECTS = 20_000
+MAX_POINTS = 1_000  # on one polyline or polygon
 
 
 @dataclass(frozen=True)
@@ -104,14 +104,20 @@ def _points(node: ET.Element, x: float, y: float, findings: Findings,
     if shape is None:
         return ()
     points: list[tuple[float, float]] = []
-    for pair in shape.get("points", "").split():
-        try:
-            px, py = (float(v) for v in pair.split(","))
-        except ValueError:
-            findings.fail(where, f"its point {pair!r} is not two numbers",
+    pairs = shape.get("points", "").split()
+    if len(pairs) > MAX_POINTS:
+        findings.fail(where, f"its line has {len(pairs):,} points, more than the "
+                      f"{MAX_POINTS:,} the game reads", "redraw the line with fewer points")
+    for pair in pairs:
+        numbers = [parse_number(v) for v in pair.split(",", 2)]
+        if len(numbers) != 2 or numbers[0] is None or numbers[1] is None:
+            findings.fail(where, f"its point {excerpt(pair)} is not two finite numbers",
                           "redraw the line in Tiled")
-        if not (math.isfinite(px) and math.isfinite(py)):
-            findings.fail(where, f"its point {pair!r} is not finite", "redraw the line in Tiled")
+        px, py = numbers[0], numbers[1]
+        if max(
+                abs(x + px), abs(y + py)) > MAX_COORDINATE_PX:
+            findings.fail(where, f"its point {excerpt(pair)} is out of range",
+                          "redraw the line in Tiled")
         points.append((x + px, y + py))
     return tuple(points)
 

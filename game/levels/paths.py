@@ -1,24 +1,26 @@
-"""Which files a level may use: the ones inside its folder tree.
+"""Which files a level may use: the level's folder is a sandbox.
 
-Where it sits: every path a map names (its tilesets, their images, its templates) goes
-through :func:`resolve` before anything is opened.
+Where it sits: every path a map names (its tilesets, their images, its templates, the
+``next_level`` that follows it) goes through :func:`resolve` before anything is opened.
 
-The rule: a map inside a project (a folder that holds both a ``levels/`` and an ``assets/``
-folder, like this repository) may use any file in that project, so the shipped levels'
-``../assets/tiles.tsx`` is fine. A map anywhere else may use files in its own folder and
-the folders below it. A path that climbs out (``../../elsewhere/tiles.tsx``, or an absolute
-``/home/someone/tiles.tsx``) works on one computer and breaks on the next, so it is refused.
+The rule: a level may use the files in the folder that holds it (and the folders below),
+and, when it sits in a project (a folder that holds both a ``levels/`` and an ``assets/``
+folder, like this repository or the installed game), the files in that project's
+``levels/`` and ``assets/``; so the shipped levels' ``../assets/tiles.tsx`` is fine. Any
+other path (``../../elsewhere/tiles.tsx``, an absolute ``/home/someone/tiles.tsx``, or a
+symbolic link inside the folder that points out of it) is refused, with the rule and the
+fix: levels are shared and downloaded, and a level must not read files it was not given.
 
 What it teaches: Tiled writes paths relative to the file that contains them (a tileset's
-image is relative to the ``.tsx``, not to the map), and a path is compared after folding
-``..`` away, without following symbolic links, the way a designer reads it.
+image is relative to the ``.tsx``, not to the map). A path is judged by where it really
+leads: ``..`` is folded away *and* symbolic links are followed (:func:`os.path.realpath`)
+before it is compared with the allowed folders, which are resolved the same way; the file
+that is then opened is that real path, so what was checked is what is read.
 
->>> root = project_root(Path("/game/levels/01.tmx"), is_project=lambda p: p == Path("/game"))
->>> root
-PosixPath('/game')
->>> inside(Path("/game/levels/../assets/tiles.tsx"), root)
+>>> sandbox = Sandbox((Path("/game/levels"), Path("/game/assets")))
+>>> sandbox.allows(Path("/game/levels/../assets/tiles.tsx"))
 True
->>> inside(Path("/game/levels/../../etc/passwd"), root)
+>>> sandbox.allows(Path("/game/levels/../../etc/passwd"))
 False
 """
 
@@ -26,54 +28,85 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
-from game.levels.errors import Findings
+from game.levels.errors import Findings, excerpt
 
 PROJECT_FOLDERS = ("levels", "assets")
+FIX_OUTSIDE = ("move the file beside the map (or into the project's assets/ or levels/ "
+               "folder) and pick it again in Tiled")
+
+
+def real(path: Path) -> Path:
+    """``path`` made absolute, ``..`` folded away and symbolic links followed."""
+    return Path(os.path.realpath(path))
 
 
 def _holds_project_folders(folder: Path) -> bool:
     return all((folder / name).is_dir() for name in PROJECT_FOLDERS)
 
 
-def _absolute(path: Path) -> Path:
-    """``path`` made absolute with ``..`` folded away, symbolic links left alone."""
-    return Path(os.path.normpath(os.path.abspath(path)))
+@dataclass(frozen=True)
+class Sandbox:
+    """The folders one level's files must lie in, each a real (resolved) path."""
+
+    roots: tuple[Path, ...]
+
+    def allows(self, path: Path) -> bool:
+        """True when ``path``, resolved, lies in one of the roots or below it."""
+        target = real(path)
+        return any(target.is_relative_to(real(root)) for root in self.roots)
+
+    def describe(self) -> str:
+        """The allowed folders, for a message."""
+        return " or ".join(str(root) for root in self.roots)
 
 
 def project_root(map_path: Path,
-                 is_project: Callable[[Path], bool] = _holds_project_folders) -> Path:
-    """The folder a map's files must sit in: the nearest folder above the map that holds
-    ``levels/`` and ``assets/``, or else the map's own folder."""
-    folder = _absolute(map_path).parent
+                 is_project: Callable[[Path], bool] = _holds_project_folders) -> Path | None:
+    """The nearest folder above the map that holds ``levels/`` and ``assets/``, if any.
+
+    >>> project_root(Path("/game/levels/01.tmx"), is_project=lambda p: p == Path("/game"))
+    PosixPath('/game')
+    """
+    folder = Path(os.path.abspath(map_path)).parent
     for candidate in (folder, *folder.parents):
         try:
             if is_project(candidate):
                 return candidate
-        except OSError:
+        except (OSError, ValueError):
             break
-    return folder
+    return None
 
 
-def inside(path: Path, root: Path) -> bool:
-    """True when ``path``, with ``..`` folded away, lies in ``root`` or below it."""
-    return _absolute(path).is_relative_to(root)
+def sandbox_for(map_path: Path, folder: Path | None = None) -> Sandbox:
+    """The sandbox of the map at ``map_path``: its folder and its project's ``levels/`` and
+    ``assets/``; or, when ``folder`` is given, that folder alone."""
+    if folder is not None:
+        return Sandbox((real(folder),))
+    own = real(Path(os.path.abspath(map_path)).parent)
+    project = project_root(map_path)
+    shared = tuple(real(project / name) for name in PROJECT_FOLDERS) if project else ()
+    return Sandbox((own, *(root for root in shared if root != own)))
 
 
-def resolve(reference: str, relative_to: Path, root: Path, findings: Findings,
+def resolve(reference: str, relative_to: Path, sandbox: Sandbox, findings: Findings,
             where: str, what: str) -> Path:
-    """The file a Tiled path names, made absolute; fail if it leaves ``root``.
+    """The real file a Tiled path names; fail if it leads out of the sandbox.
 
     ``relative_to`` is the folder of the file the reference was written in.
     """
     if not reference.strip():
         findings.fail(where, f"the {what} has no file name",
                       "pick the file again in Tiled")
-    target = _absolute(relative_to / reference)
-    if not inside(target, root):
-        findings.fail(where, f"the {what} {reference!r} is outside the level's folder "
-                      f"({root})",
-                      "move the file into the project's assets/ or levels/ folder (or "
-                      "beside the map) and pick it again in Tiled")
+    try:
+        target = real(relative_to / reference)
+    except (OSError, ValueError):
+        findings.fail(where, f"the {what} {excerpt(reference)} is not a usable path",
+                      "pick the file again in Tiled")
+    if not sandbox.allows(target):
+        findings.fail(where, f"the {what} {excerpt(reference)} leads outside the level's "
+                      f"folder; a level may only use files in {sandbox.describe()}",
+                      FIX_OUTSIDE)
     return target

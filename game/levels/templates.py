@@ -28,7 +28,7 @@ from pathlib import Path
 
 from game.levels.attributes import whole
 from game.levels.errors import Findings
-from game.levels.paths import resolve
+from game.levels.paths import Sandbox, resolve
 from game.levels.tiledata import FLAG_BITS, split
 from game.levels.tiledxml import read_tiled_xml, refuse_json
 from game.levels.tilesets import Tilesets, read_tileset_file
@@ -53,7 +53,7 @@ def merge(template: ET.Element, instance: ET.Element) -> ET.Element:
 class Templates:
     """The templates one map uses, each read once, their tiles renumbered for the map."""
 
-    def __init__(self, map_path: Path, root: Path, tilesets: Tilesets, findings: Findings,
+    def __init__(self, map_path: Path, root: Sandbox, tilesets: Tilesets, findings: Findings,
                  check_images: bool) -> None:
         self.map_dir = map_path.parent
         self.root = root

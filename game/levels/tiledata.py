@@ -34,6 +34,7 @@ ROTATED_120 = 0x10000000  # hexagonal maps only
 FLIP_BITS = FLIPPED_H | FLIPPED_V | FLIPPED_D
 FLAG_BITS = FLIP_BITS | ROTATED_120
 MAX_GID = 0xFFFFFFFF
+MAX_GID_DIGITS = 10  # 4294967295; a longer token is out of range before it is converted
 
 ZLIB_WBITS = {"zlib": zlib.MAX_WBITS, "gzip": 16 + zlib.MAX_WBITS}
 FIX_FORMAT = "choose CSV or Base64 (zlib or gzip) in Map > Map Properties > Tile Layer Format"
@@ -62,7 +63,8 @@ def decode_csv(text: str, count: int) -> list[int]:
     gids: list[int] = []
     for piece in text.split(","):
         token = piece.strip()
-        if not (token.isascii() and token.isdigit()) or int(token) > MAX_GID:
+        if not (token.isascii() and token.isdigit()) or len(token) > MAX_GID_DIGITS or (
+                int(token) > MAX_GID):
             raise TileDataError(f"the tile data holds {token[:20]!r} where a tile id belongs")
         gids.append(int(token))
     return gids

@@ -34,7 +34,7 @@ from game.levels.classes import CLASSES_BY_NAME
 from game.levels.errors import Findings
 from game.levels.header import MAX_TILE_PX
 from game.levels.images import check_image
-from game.levels.paths import resolve
+from game.levels.paths import Sandbox, resolve
 from game.levels.properties import class_of
 from game.levels.tiledata import ROTATED_120
 from game.levels.tiledxml import read_tiled_xml, refuse_json
@@ -130,7 +130,7 @@ def _collision_boxes(tile: ET.Element, findings: Findings, where: str) -> tuple[
     return tuple(boxes)
 
 
-def _tile_info(tile: ET.Element, base: Path, root: Path, findings: Findings, where: str,
+def _tile_info(tile: ET.Element, base: Path, root: Sandbox, findings: Findings, where: str,
                check_images: bool) -> TileInfo:
     image, size = None, (0, 0)
     image_node = tile.find("image")
@@ -143,7 +143,7 @@ def _tile_info(tile: ET.Element, base: Path, root: Path, findings: Findings, whe
     return TileInfo(class_of(tile.attrib), _collision_boxes(tile, findings, where), image, size)
 
 
-def _image(node: ET.Element, base: Path, root: Path, findings: Findings, where: str,
+def _image(node: ET.Element, base: Path, root: Sandbox, findings: Findings, where: str,
            check_images: bool) -> tuple[Path | None, tuple[int, int], str | None]:
     """The tileset's image, its size (read from the file if Tiled did not write it) and its
     transparent colour."""
@@ -184,7 +184,7 @@ def _grid(node: ET.Element, tile_w: int, tile_h: int, image_size: tuple[int, int
 
 
 def _tileset(node: ET.Element, firstgid: int, base: Path, path: Path | None, where: str,
-             root: Path, findings: Findings, check_images: bool) -> Tileset:
+             root: Sandbox, findings: Findings, check_images: bool) -> Tileset:
     """Read a ``<tileset>`` element; ``base`` is the folder its paths are relative to."""
     tile_w = whole(node.attrib, "tilewidth", findings, where)
     tile_h = whole(node.attrib, "tileheight", findings, where)
@@ -211,7 +211,7 @@ def _tileset(node: ET.Element, firstgid: int, base: Path, path: Path | None, whe
                    tilecount, spacing, margin, image, image_size, trans, tiles, path)
 
 
-def read_tileset_file(source: str, relative_to: Path, firstgid: int, root: Path,
+def read_tileset_file(source: str, relative_to: Path, firstgid: int, root: Sandbox,
                       findings: Findings, check_images: bool, where: str) -> Tileset:
     """Read the ``.tsx`` file that ``source`` names, as a tileset starting at ``firstgid``."""
     refuse_json(findings, where, "tileset", source)
@@ -221,7 +221,7 @@ def read_tileset_file(source: str, relative_to: Path, firstgid: int, root: Path,
                     f"({source})", root, findings, check_images)
 
 
-def _read_tileset(element: ET.Element, map_dir: Path, root: Path, findings: Findings,
+def _read_tileset(element: ET.Element, map_dir: Path, root: Sandbox, findings: Findings,
                   check_images: bool) -> Tileset:
     """A map's ``<tileset>``: embedded, or naming a ``.tsx`` file."""
     source = element.get("source")
@@ -234,7 +234,7 @@ def _read_tileset(element: ET.Element, map_dir: Path, root: Path, findings: Find
     return _tileset(element, firstgid, map_dir, None, where, root, findings, check_images)
 
 
-def read_tilesets(map_root: ET.Element, map_path: Path, root: Path, findings: Findings,
+def read_tilesets(map_root: ET.Element, map_path: Path, root: Sandbox, findings: Findings,
                   check_images: bool) -> Tilesets:
     """Every tileset of the map, checked, with non-overlapping GID ranges."""
     elements = map_root.findall("tileset")
