@@ -207,7 +207,7 @@ def test_a_save_of_deep_json_or_huge_numbers_is_kept_aside(tmp_path: Path, text:
     for parse, default in ((Settings.from_json, Settings), (Progress.from_json, Progress)):
         path = tmp_path / "save.json"
         path.write_text(text, encoding="utf-8")
-        value, problem = JsonFile(path).load(parse, default)  # type: ignore[arg-type]
+        value, problem = JsonFile(path).load(parse, default)
         assert value == default()
         assert problem is not None and len(problem) < MAX_MESSAGE_CHARS
 
