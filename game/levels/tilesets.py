@@ -25,15 +25,15 @@ import bisect
 import itertools
 import xml.etree.ElementTree as ET
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from game.collision.aabb import Box
 from game.levels.attributes import number, whole
 from game.levels.classes import CLASSES_BY_NAME
-from game.levels.errors import Findings
+from game.levels.errors import Findings, excerpt
 from game.levels.header import MAX_TILE_PX
-from game.levels.images import check_image
+from game.levels.images import MAX_IMAGE_PX, charge_pixels, check_image
 from game.levels.paths import Sandbox, resolve
 from game.levels.properties import class_of
 from game.levels.tiledata import ROTATED_120
@@ -41,7 +41,8 @@ from game.levels.tiledxml import read_tiled_xml, refuse_json
 
 SHAPE_TAGS = ("ellipse", "point", "polygon", "polyline", "text", "capsule")
 MAX_FIRSTGID = ROTATED_120 - 1  # GIDs share their 32 bits with the flip flags
-MAX_TILES = 1 << 20
+MAX_TILES = 1 << 18  # in one tileset: a 8192x8192 image of 16x16 tiles
+MAX_MAP_TILES = 1 << 19  # in all the tilesets of one map together
 MAX_TILESETS = 1_000  # real maps use a handful; thousands would only slow loading down
 
 
@@ -136,8 +137,8 @@ def _tile_info(tile: ET.Element, base: Path, root: Sandbox, findings: Findings, 
     image_node = tile.find("image")
     if image_node is not None:
         image = resolve(image_node.get("source", ""), base, root, findings, where, "tile image")
-        size = (whole(image_node.attrib, "width", findings, where, 0),
-                whole(image_node.attrib, "height", findings, where, 0))
+        size = (whole(image_node.attrib, "width", findings, where, 0, high=MAX_IMAGE_PX),
+                whole(image_node.attrib, "height", findings, where, 0, high=MAX_IMAGE_PX))
         if check_images:
             size = check_image(image, findings, where, "tile image")
     return TileInfo(class_of(tile.attrib), _collision_boxes(tile, findings, where), image, size)
@@ -151,8 +152,8 @@ def _image(node: ET.Element, base: Path, root: Sandbox, findings: Findings, wher
     if image_node is None:
         return None, (0, 0), None
     image = resolve(image_node.get("source", ""), base, root, findings, where, "tileset image")
-    declared = (whole(image_node.attrib, "width", findings, where, 0),
-                whole(image_node.attrib, "height", findings, where, 0))
+    declared = (whole(image_node.attrib, "width", findings, where, 0, high=MAX_IMAGE_PX),
+                whole(image_node.attrib, "height", findings, where, 0, high=MAX_IMAGE_PX))
     size = declared
     size_unknown = 0 in declared and "tilecount" not in node.attrib  # Tiled before 0.13
     if check_images or size_unknown:
@@ -178,6 +179,12 @@ def _grid(node: ET.Element, tile_w: int, tile_h: int, image_size: tuple[int, int
     margin = whole(node.attrib, "margin", findings, where, 0, high=MAX_TILE_PX)
     fit_x = max(0, (image_size[0] - 2 * margin + spacing) // (tile_w + spacing))
     fit_y = max(0, (image_size[1] - 2 * margin + spacing) // (tile_h + spacing))
+    cut = ((image_size[0] + spacing) // (tile_w + spacing)) * (
+        (image_size[1] + spacing) // (tile_h + spacing))  # the places pytmx will visit
+    if cut > MAX_TILES:
+        findings.fail(where, f"its {image_size[0]}x{image_size[1]} image cuts into {cut:,} "
+                      f"tiles of {tile_w}x{tile_h}, more than the {MAX_TILES:,} the game reads",
+                      "use larger tiles or a smaller image in the Tileset Properties")
     columns = whole(node.attrib, "columns", findings, where, fit_x, high=MAX_TILES)
     tilecount = whole(node.attrib, "tilecount", findings, where, fit_x * fit_y, high=MAX_TILES)
     return spacing, margin, columns, tilecount
@@ -212,25 +219,49 @@ def _tileset(node: ET.Element, firstgid: int, base: Path, path: Path | None, whe
 
 
 def read_tileset_file(source: str, relative_to: Path, firstgid: int, root: Sandbox,
-                      findings: Findings, check_images: bool, where: str) -> Tileset:
-    """Read the ``.tsx`` file that ``source`` names, as a tileset starting at ``firstgid``."""
+                      findings: Findings, check_images: bool, where: str,
+                      cache: dict[Path, Tileset] | None = None) -> Tileset:
+    """Read the ``.tsx`` file that ``source`` names, as a tileset starting at ``firstgid``.
+
+    With a ``cache``, a file is read once however often the map names it: a later mention
+    is the same tileset renumbered (its images still count against the level's pixels,
+    since each mention is drawn from its own copy)."""
     refuse_json(findings, where, "tileset", source)
     path = resolve(source, relative_to, root, findings, where, "tileset file")
+    cached = cache.get(path) if cache is not None else None
+    if cached is not None:
+        if check_images:
+            for image, (width, height) in _images_of(cached):
+                charge_pixels(findings, cached.place, image, width, height)
+        return replace(cached, firstgid=firstgid)
     node = read_tiled_xml(path, "tileset", findings, where)
-    return _tileset(node, firstgid, path.parent, path, f"tileset '{node.get('name', '')}' "
-                    f"({source})", root, findings, check_images)
+    tileset = _tileset(node, firstgid, path.parent, path, f"tileset "
+                       f"{excerpt(node.get('name', ''))} ({excerpt(source)})", root, findings,
+                       check_images)
+    if cache is not None:
+        cache[path] = tileset
+    return tileset
+
+
+def _images_of(tileset: Tileset) -> list[tuple[Path, tuple[int, int]]]:
+    """Every image a tileset draws from, with its size."""
+    images = [(tile.image, tile.image_size) for tile in tileset.tiles.values()
+              if tile.image is not None]
+    if tileset.image is not None:
+        images.append((tileset.image, tileset.image_size))
+    return images
 
 
 def _read_tileset(element: ET.Element, map_dir: Path, root: Sandbox, findings: Findings,
-                  check_images: bool) -> Tileset:
+                  check_images: bool, cache: dict[Path, Tileset]) -> Tileset:
     """A map's ``<tileset>``: embedded, or naming a ``.tsx`` file."""
     source = element.get("source")
-    where = f"tileset {source!r}" if source is not None else \
-        f"tileset '{element.get('name', '')}'"
+    where = f"tileset {excerpt(source)}" if source is not None else \
+        f"tileset {excerpt(element.get('name', ''))}"
     firstgid = whole(element.attrib, "firstgid", findings, where, low=1, high=MAX_FIRSTGID)
     if source is not None:
         return read_tileset_file(source, map_dir, firstgid, root, findings, check_images,
-                                 where)
+                                 where, cache)
     return _tileset(element, firstgid, map_dir, None, where, root, findings, check_images)
 
 
@@ -242,8 +273,14 @@ def read_tilesets(map_root: ET.Element, map_path: Path, root: Sandbox, findings:
         findings.fail("map", f"it uses {len(elements):,} tilesets, more than the "
                       f"{MAX_TILESETS:,} the game reads",
                       "merge tilesets, and remove unused ones with Map > Remove Tileset")
-    tilesets = Tilesets(_read_tileset(element, map_path.parent, root, findings, check_images)
-                        for element in elements)
+    cache: dict[Path, Tileset] = {}
+    tilesets = Tilesets(_read_tileset(element, map_path.parent, root, findings, check_images,
+                                      cache) for element in elements)
+    total = sum(tileset.span for tileset in tilesets.all)
+    if total > MAX_MAP_TILES:
+        findings.fail("map", f"its tilesets hold {total:,} tiles, more than the "
+                      f"{MAX_MAP_TILES:,} the game reads for one map",
+                      "remove unused tilesets with Map > Remove Tileset, or merge them")
     for before, after in itertools.pairwise(tilesets.all):
         if after.firstgid <= before.last_gid:
             findings.fail(after.place, f"its tile ids start at {after.firstgid}, inside the "
