@@ -14,7 +14,7 @@ from pathlib import Path
 import pygame
 import pytest
 
-from game.levels import check_level, load_level
+from game.levels import check_level, load_level, tiledxml
 from game.levels import tilesets as tilesets_module
 from game.levels.images import header_size
 from tests.test_loader import OBJECTS, TILESET, solids, write_map
@@ -97,7 +97,7 @@ def test_a_tileset_named_a_thousand_times_is_read_once(
     tilesets = "".join(f'<tileset firstgid="{1 + 4 * n}" source="t.tsx"/>'
                        for n in range(1000))
     reads: list[Path] = []
-    read = tilesets_module.read_tiled_xml
+    read = tiledxml.read_tiled_xml
 
     def counting(path: Path, *args: object, **kwargs: object) -> object:
         reads.append(path)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import warnings
 from pathlib import Path
 from typing import Any
@@ -120,3 +121,33 @@ def test_key_names_are_read_before_pygame_init_without_a_warning() -> None:
         assert key_code("nosuchkey") is None
         settings, problems = Settings.from_json({"keys": {"jump": ["Return"]}})
     assert problems == [] and settings.keys["jump"] == ["return"]
+
+
+@pytest.mark.parametrize(("data", "reason"), [
+    ({"buttons": {"jump": [10**29]}}, "not a button number from 0 to 63"),
+    ({"keys": {action: ["x"] for action in ("left", "right", "up", "down", "jump")}},
+     "'x' is bound to both left and right"),
+    ({"keys": {"down": ["s"], "jump": ["s"]}}, "'s' is bound to both down and jump"),
+    ({"buttons": {"left": [3], "right": [3]}}, "3 is bound to both left and right"),
+])
+def test_impossible_bindings_are_refused_with_the_reason_and_the_defaults_kept(
+        data: dict[str, object], reason: str) -> None:
+    settings, problems = Settings.from_json(data)
+    assert settings.keys == Settings().keys and settings.buttons == Settings().buttons
+    assert any(reason in problem for problem in problems), problems
+
+
+def test_temporary_files_of_an_interrupted_save_are_removed_at_the_next_start(
+        tmp_path: Path) -> None:
+    dead = 2**22 + 12345  # above Linux's largest process id, so no process has it
+    orphans = [tmp_path / f".settings.{dead}.0123abcd.json",
+               tmp_path / f".settings.{dead}.89abcdef.json"]
+    for orphan in orphans:
+        orphan.write_text("{", encoding="utf-8")
+    mine = tmp_path / f".settings.{os.getpid()}.00000000.json"  # a save under way: kept
+    mine.write_text("{", encoding="utf-8")
+    other = tmp_path / f".progress.{dead}.0123abcd.json"  # another file's: not touched here
+    other.write_text("{", encoding="utf-8")
+    settings, problem = settings_file(tmp_path).load(Settings.from_json, Settings)
+    assert problem is None and settings == Settings()
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([mine.name, other.name])

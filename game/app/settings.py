@@ -10,6 +10,9 @@ What it teaches:
     read; the rest of the game can trust a :class:`Settings`. An unknown key is ignored (a
     newer version's file still loads); a bad value gets its default and one line in the
     report returned to the caller, which decides whether to show it.
+  * **Check what the values mean together, not only one by one.** A file that binds
+    left and right to the same key, or a button numbered 10**29, is refused with the reason
+    and the defaults are kept, rather than leaving a player who cannot move.
   * **Store what a person can read.** Keys are stored by name (``"left"``, ``"a"``,
     ``"space"``), as pygame names them, and turned into key codes only when the game needs
     them (:meth:`Settings.key_codes`).
@@ -59,6 +62,13 @@ DEFAULT_KEYS: dict[str, tuple[str, ...]] = {  # action name -> pygame key names
 # Gamepad buttons by number, as ``JOYBUTTONDOWN`` events report them. Button 0 is the bottom
 # face button (A on an Xbox-style pad) on most pads; moving uses the stick or the d-pad.
 DEFAULT_BUTTONS: dict[str, tuple[int, ...]] = {Action.JUMP.value: (0,)}
+MAX_BUTTON = 63  # SDL numbers a pad's buttons from 0; pads have a few dozen at most
+# Actions that may not share a key or a button: opposite directions cancel out, and down
+# with jump is the drop through a one-way platform, so it needs two separate presses.
+# (Up and jump share keys by default: the simulation never reads up.)
+CLASHING_ACTIONS = ((Action.LEFT.value, Action.RIGHT.value),
+                    (Action.UP.value, Action.DOWN.value),
+                    (Action.DOWN.value, Action.JUMP.value))
 
 
 def key_code(name: str) -> int | None:
@@ -154,7 +164,12 @@ class Settings:
                            "key name pygame knows", False, problems)
         if "buttons" in data:  # a button list may be empty: the stick and d-pad still move
             _read_bindings(data["buttons"], "buttons", settings.buttons, _button_or_none,
-                           "button number (0 or more)", True, problems)
+                           f"button number from 0 to {MAX_BUTTON}", True, problems)
+        for section, defaults in (("keys", _default_keys), ("buttons", _default_buttons)):
+            clash = _clash(getattr(settings, section))
+            if clash is not None:
+                problems.append(f"{section}: {clash} (using the default {section})")
+                setattr(settings, section, defaults())
         return settings, problems
 
 
@@ -177,9 +192,31 @@ def _key_name_or_none(value: object) -> str | None:
 
 def _button_or_none(value: object) -> int | None:
     """A gamepad button number, or None."""
-    if isinstance(value, int) and not isinstance(value, bool) and value >= 0:
+    if isinstance(value, int) and not isinstance(value, bool) and 0 <= value <= MAX_BUTTON:
         return value
     return None
+
+
+def _clash(bindings: dict[str, list[T]]) -> str | None:
+    """Why these bindings cannot be played, or None: one key or button bound to two actions
+    that cancel out or must be pressed apart.
+
+    >>> _clash({"left": ["a"], "right": ["a", "d"]})
+    "'a' is bound to both left and right, which cannot work together"
+    >>> _clash({"up": ["w"], "jump": ["w"]}) is None
+    True
+    """
+    for first, second in CLASHING_ACTIONS:
+        shared = [entry for entry in bindings.get(first, []) if entry in
+                  bindings.get(second, [])]
+        if shared:
+            return (f"{quoted_entry(shared[0])} is bound to both {first} and {second}, "
+                    "which cannot work together")
+    return None
+
+
+def quoted_entry(entry: object) -> str:
+    return repr(entry) if isinstance(entry, str) else str(entry)
 
 
 def _read_bindings(data: object, section: str, bindings: dict[str, list[T]],
