@@ -258,7 +258,7 @@ def test_an_unreadable_image_is_reported_by_the_checker(tmp_path: Path) -> None:
     (tmp_path / "tiles.png").write_bytes(b"not a png at all")
     image = '<image source="tiles.png" width="64" height="16"/>'
     [error] = check_level(write_map(tmp_path, tileset=TILESET.format(image=image))).errors
-    assert "tiles.png cannot be decoded" in str(error)
+    assert "tiles.png is not a PNG, GIF, BMP or JPEG image" in str(error)
 
 
 def test_embedded_collision_shapes_make_no_phantom_layer_nor_clobber_ids(tmp_path: Path
