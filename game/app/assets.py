@@ -19,11 +19,12 @@ What it teaches:
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 
 import pygame
 
-ASSETS = Path(__file__).resolve().parents[2] / "assets"
+from game.levels.shipped import ASSETS_DIR
+
+ASSETS = ASSETS_DIR
 
 SPRITE_PX = 16  # player and enemy frames are 16x16
 COIN_PX = 8  # coin frames are 8x8

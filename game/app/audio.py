@@ -35,9 +35,10 @@ from pathlib import Path
 
 import pygame
 
+from game.levels.shipped import ASSETS_DIR
 from game.sim.world import EventKind
 
-ASSETS = Path(__file__).resolve().parents[2] / "assets"
+ASSETS = ASSETS_DIR
 SOUNDS = ASSETS / "sounds"
 
 # <name>.wav in SOUNDS; "tally" plays when the level-end banner's tally is up

@@ -8,13 +8,9 @@ with one. ``python -m game.levels check PATH...`` prints those findings, and
 
 from __future__ import annotations
 
-from pathlib import Path
-
 from game.levels.errors import Findings, LevelError, LevelWarning
 from game.levels.loader import check_level, load_level
+from game.levels.shipped import ASSETS_DIR, FIRST_LEVEL, LEVELS_DIR
 
-LEVELS_DIR = Path(__file__).resolve().parent.parent.parent / "levels"
-FIRST_LEVEL = LEVELS_DIR / "01-first-steps.tmx"
-
-__all__ = ["FIRST_LEVEL", "LEVELS_DIR", "Findings", "LevelError", "LevelWarning",
+__all__ = ["ASSETS_DIR", "FIRST_LEVEL", "LEVELS_DIR", "Findings", "LevelError", "LevelWarning",
            "check_level", "load_level"]

@@ -24,13 +24,13 @@ from __future__ import annotations
 import math
 import random
 from collections.abc import Callable, Mapping, Sequence
-from pathlib import Path
 
 import pygame
 
+from game.levels.shipped import ASSETS_DIR
 from game.tools.pixel_font import write_fonts
 
-ASSETS = Path(__file__).resolve().parents[2] / "assets"
+ASSETS = ASSETS_DIR
 
 RGB = tuple[int, int, int]
 CharMap = Sequence[str]

@@ -44,8 +44,9 @@ from enum import Enum
 from pathlib import Path
 
 from game.app.files import write_atomically
+from game.levels.shipped import ASSETS_DIR
 
-ASSETS = Path(__file__).resolve().parents[2] / "assets"
+ASSETS = ASSETS_DIR
 SOUNDS = ASSETS / "sounds"
 
 SAMPLE_RATE_HZ = 22050

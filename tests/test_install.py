@@ -1,0 +1,91 @@
+"""The game installs like any Python program and plays from any folder.
+
+The wheel is built from a copy of the repository, installed into a fresh virtual
+environment, and run as ``tile-hopper`` from a folder that holds nothing of the game: the
+campaign, the tileset, the art and the sounds must all come from inside the installed
+package. Building and installing take a minute, so the test carries the ``install`` mark
+(``pytest -m "not install"`` skips it); CI runs it.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+tomllib = pytest.importorskip("tomllib")  # Python 3.11 and later read TOML themselves
+
+ROOT = Path(__file__).resolve().parent.parent
+SOURCES = ("pyproject.toml", "README.md", "game", "levels", "assets")
+INSTALL_TIMEOUT_S = 900  # a busy machine, wheels from the local cache or PyPI
+
+
+def declared_packages() -> set[str]:
+    config = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
+    return set(config["tool"]["setuptools"]["packages"])
+
+
+def test_the_build_lists_every_package_of_the_game() -> None:
+    found = {".".join(init.parent.relative_to(ROOT).parts)
+             for init in (ROOT / "game").rglob("__init__.py")}
+    assert found - declared_packages() == set()
+
+
+def test_the_build_carries_the_campaign_and_the_assets_inside_the_package() -> None:
+    config = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
+    mapped = config["tool"]["setuptools"]["package-dir"]
+    assert mapped["game.data.levels"] == "levels" and mapped["game.data.assets"] == "assets"
+    assert {"tile-hopper", "tile-hopper-levels"} <= set(config["project"]["scripts"])
+
+
+def run(command: list[str | Path], cwd: Path, env: dict[str, str] | None = None
+        ) -> subprocess.CompletedProcess[str]:
+    result = subprocess.run([str(part) for part in command], cwd=cwd, env=env,
+                            capture_output=True, text=True, timeout=INSTALL_TIMEOUT_S,
+                            check=False)
+    assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-2000:]
+    return result
+
+
+@pytest.mark.install
+def test_a_wheel_installed_in_a_fresh_environment_plays_level_one_from_any_folder(
+        tmp_path: Path) -> None:
+    source = tmp_path / "source"
+    for name in SOURCES:
+        if (ROOT / name).is_dir():
+            shutil.copytree(ROOT / name, source / name,
+                            ignore=shutil.ignore_patterns("__pycache__", "charts",
+                                                          "screenshots"))
+        else:
+            source.mkdir(exist_ok=True)
+            shutil.copy2(ROOT / name, source / name)
+    wheels = tmp_path / "wheels"
+    run([sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", wheels, source],
+        tmp_path)
+    [wheel] = wheels.glob("tile_hopper-*.whl")
+
+    venv = tmp_path / "venv"
+    run([sys.executable, "-m", "venv", venv], tmp_path)
+    bin_dir = venv / ("Scripts" if os.name == "nt" else "bin")
+    run([bin_dir / "python", "-m", "pip", "install", "-q", wheel], tmp_path)
+
+    elsewhere = tmp_path / "elsewhere"  # nothing of the game here, nor above it
+    elsewhere.mkdir()
+    env = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy"}
+    env.pop("PYTHONPATH", None)
+    run([bin_dir / "tile-hopper", "--headless", "--ticks", "600", "--report", "r.json",
+         "--screenshot", "shot.png"], elsewhere, env)
+    report = json.loads((elsewhere / "r.json").read_text(encoding="utf-8"))
+    assert report["ticks"] == 600
+    assert report["level"].endswith("game/data/levels/01-first-steps.tmx")
+    assert "site-packages" in report["level"] or "Lib" in report["level"]
+    assert (elsewhere / "shot.png").stat().st_size > 0  # the art came from the package
+
+    checked = run([bin_dir / "tile-hopper-levels", "check", Path(report["level"]).parent],
+                  elsewhere, env)
+    assert "all playable" in checked.stderr
