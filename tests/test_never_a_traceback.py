@@ -13,6 +13,7 @@ import os
 import signal
 import subprocess
 import sys
+import threading
 import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -21,7 +22,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from game.app import cli
+from game.app import cli, files
 from game.app.saves import JsonFile, Progress
 from game.app.settings import Settings
 from game.bench import main as bench_main
@@ -74,12 +75,30 @@ def a_file(tmp_path: Path) -> Path:
 
 # -- python -m game ------------------------------------------------------------------------
 
-def test_a_pipe_given_as_input_script_is_refused_without_waiting(
-        fifo: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_a_pipe_nobody_writes_to_is_a_sentence_not_a_hang(
+        fifo: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(files, "MAX_PIPE_WAIT_S", 0.2)
     status, err = outcome(cli.main, ["--headless", "--ticks", "5", "--inputs", str(fifo)],
                           capsys)
     assert_one_sentence(status, err, 1)
-    assert "not a regular file" in err
+    assert "nothing came through it" in err
+
+
+def test_a_script_written_into_a_pipe_is_played(fifo: Path, tmp_path: Path,
+                                                capsys: pytest.CaptureFixture[str]) -> None:
+    def write() -> None:  # like the shell's --inputs <(command)
+        with fifo.open("w", encoding="utf-8") as pipe:  # waits for the game to open it
+            pipe.write("0 +right\n")
+
+    writer = threading.Thread(target=write, daemon=True)
+    writer.start()
+    report = tmp_path / "report.json"
+    status, err = outcome(cli.main, ["--headless", "--ticks", "30", "--inputs", str(fifo),
+                                     "--report", str(report)], capsys)
+    writer.join(timeout=FIFO_TIMEOUT_S)
+    assert status == 0, err
+    player = json.loads(report.read_text(encoding="utf-8"))["player"]
+    assert player["vx"] > 0
 
 
 @pytest.mark.parametrize("device", ["/dev/zero", "/dev/null"])
@@ -257,8 +276,9 @@ def short_run(ticks: str) -> bool:
 @given(choices=st.lists(st.tuples(st.sampled_from(OPTIONS), st.integers(0, 9)), max_size=3),
        ticks=NUMBERS.filter(short_run), content=st.binary(max_size=2000))
 def test_the_game_answers_random_paths_numbers_and_bytes_with_a_status(
-        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch,
         choices: list[tuple[str, int]], ticks: str, content: bytes) -> None:
+    monkeypatch.setattr(files, "MAX_PIPE_WAIT_S", 0.05)
     paths = _paths(tmp_path)
     (tmp_path / "plain.txt").write_bytes(content)  # random bytes as a script or a level
     args = ["--headless", "--ticks", ticks]

@@ -5,9 +5,11 @@ Where it sits: under every file the app touches: ``--inputs``, ``--record``, ``-
 
 What it teaches:
   * **Look before you open.** :func:`read_small_text` asks ``stat`` what a path is before
-    opening it: a folder, a pipe (which would wait forever for a writer) or a device such as
-    ``/dev/zero`` (which never ends) is refused, and so is a file larger than the caller's
-    limit, so nothing is read that could not fit.
+    opening it: a folder or a device such as ``/dev/zero`` (which never ends) is refused,
+    and so is a file larger than the caller's limit, so nothing is read that could not fit.
+    A named pipe, where the caller accepts one (an input script made by ``<(command)``), is
+    opened without blocking and read with a time limit, so a pipe nobody writes to is a
+    sentence after ten seconds instead of a hang.
   * **Write atomically.** :func:`write_atomically` writes a temporary file in the same
     folder and renames it over the target: on every platform Python supports,
     :func:`os.replace` is atomic, so readers see the old file or the new one, never half.
@@ -29,10 +31,14 @@ import os
 import re
 import secrets
 import stat
+import time
 from collections.abc import Callable
 from pathlib import Path
 
 MAX_PATH_SHOWN_CHARS = 200  # a path longer than this is shown by its start and end
+MAX_PIPE_WAIT_S = 10.0  # a pipe read for a file may stay silent this long, no longer
+PIPE_POLL_S = 0.01
+PIPE_CHUNK_BYTES = 64 * 1024
 
 
 class FileProblem(Exception):
@@ -68,10 +74,48 @@ def _reason(error: OSError) -> str:
     return error.strerror or type(error).__name__
 
 
-def read_small_text(path: Path, max_bytes: int, what: str) -> str:
+def _read_pipe(path: Path, max_bytes: int, what: str) -> bytes:
+    """Everything written into the pipe at ``path`` until its writer closes it, waiting at
+    most MAX_PIPE_WAIT_S for each piece: a pipe nobody writes to is a sentence, not a hang.
+
+    The pipe is opened without blocking (an ordinary open would wait for a writer forever);
+    until a writer has appeared, an empty read means "nobody yet", not "the end".
+    """
+    name = shown(path)
+    try:
+        descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except OSError as error:
+        raise FileProblem(f"{name}: {what} cannot be read ({_reason(error)}) — check the path",
+                          _reason(error)) from None
+    data, writer_seen = bytearray(), False
+    deadline = time.monotonic() + MAX_PIPE_WAIT_S
+    try:
+        while len(data) <= max_bytes:
+            try:
+                chunk = os.read(descriptor, PIPE_CHUNK_BYTES)
+            except BlockingIOError:  # a writer is there, with nothing to say yet
+                chunk, writer_seen = None, True
+            if chunk:
+                data += chunk
+                writer_seen, deadline = True, time.monotonic() + MAX_PIPE_WAIT_S
+                continue
+            if chunk == b"" and writer_seen:
+                break  # the writer closed the pipe: that is all
+            if time.monotonic() > deadline:
+                raise FileProblem(f"{name}: {what} is a pipe and nothing came through it for "
+                                  f"{MAX_PIPE_WAIT_S:g} s — give the path of a file",
+                                  "nothing came through the pipe")
+            time.sleep(PIPE_POLL_S)
+    finally:
+        os.close(descriptor)
+    return bytes(data)
+
+
+def read_small_text(path: Path, max_bytes: int, what: str, pipes: bool = False) -> str:
     """The UTF-8 text of a regular file of at most ``max_bytes``; else a FileProblem.
 
-    ``what`` names the file for the message (``"the input script"``).
+    ``what`` names the file for the message (``"the input script"``). With ``pipes``, a
+    named pipe (or a shell's ``<(command)``) is read too, with a time limit.
     """
     name = shown(path)
     try:
@@ -86,6 +130,9 @@ def read_small_text(path: Path, max_bytes: int, what: str) -> str:
     if stat.S_ISDIR(status.st_mode):
         raise FileProblem(f"{name}: {what} is a folder, not a file — give the path of a file",
                           "it is a folder")
+    if pipes and stat.S_ISFIFO(status.st_mode):
+        return _decode(_checked_size(_read_pipe(path, max_bytes, what), max_bytes, name, what),
+                       name, what)
     if not stat.S_ISREG(status.st_mode):
         raise FileProblem(f"{name}: {what} is not a regular file (a pipe or a device?) — "
                           "give the path of a file", "it is not a regular file")
@@ -102,9 +149,17 @@ def read_small_text(path: Path, max_bytes: int, what: str) -> str:
     except OSError as error:
         raise FileProblem(f"{name}: {what} cannot be read ({_reason(error)}) — "
                           "check that you may read it", _reason(error)) from None
+    return _decode(_checked_size(data, max_bytes, name, what), name, what)
+
+
+def _checked_size(data: bytes, max_bytes: int, name: str, what: str) -> bytes:
     if len(data) > max_bytes:
         raise FileProblem(f"{name}: {what} is larger than {max_bytes:,} bytes — "
                           "give a smaller file", f"it is larger than {max_bytes:,} bytes")
+    return data
+
+
+def _decode(data: bytes, name: str, what: str) -> str:
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError:

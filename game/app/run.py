@@ -153,7 +153,7 @@ def run(args: argparse.Namespace, play_in_window: Callable[[Run], int]) -> int:
     if args.inputs:
         try:
             script = InputScript.parse(
-                read_small_text(args.inputs, MAX_SCRIPT_BYTES, "the input script"),
+                read_small_text(args.inputs, MAX_SCRIPT_BYTES, "the input script", pipes=True),
                 shown(args.inputs))
         except FileProblem as error:
             return fail(str(error), EXIT_BAD_FILE)
