@@ -2,6 +2,7 @@
 
 import sys
 
+from game.app.arguments import run_command
 from game.lab.cli import main
 
-sys.exit(main())
+sys.exit(run_command(main))

@@ -13,12 +13,15 @@ a README picture sees what a reader sees.
 
 from __future__ import annotations
 
-import argparse
 import os
 import sys
 from pathlib import Path
 
+from game.app.arguments import Parser, excerpt, whole_number
+from game.app.files import output_problem
 from game.lab.catalogue import SCENES
+
+MAX_FRAMES = 36_000  # ten minutes of the lab at 60 frames a second
 
 WINDOW_FPS = 60
 
@@ -28,14 +31,15 @@ def scene_names() -> list[str]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="python -m game.lab",
         description="Interactive scenes, one per collision technique.")
     parser.add_argument("--list", action="store_true", help="print the scene names and exit")
     parser.add_argument("--scene", metavar="NAME", help="open this scene")
     parser.add_argument("--screenshot", metavar="PNG", type=Path,
                         help="draw without a window and save the last frame here")
-    parser.add_argument("--frames", metavar="N", type=int, default=1,
+    parser.add_argument("--frames", metavar="N", default=1,
+                        type=whole_number(1, MAX_FRAMES, "frames"),
                         help="frames to draw before the screenshot (default 1)")
     args = parser.parse_args(argv)
     names = scene_names()
@@ -43,12 +47,16 @@ def main(argv: list[str] | None = None) -> int:
         print("\n".join(names))
         return 0
     if args.scene is not None and args.scene not in names:
-        print(f"python -m game.lab: there is no scene called {args.scene!r}; the scenes are:",
+        print(f"python -m game.lab: there is no scene called {excerpt(args.scene)}; the scenes "
+              "are:",
               file=sys.stderr)
         print("\n".join(names), file=sys.stderr)
         return 2
     if args.frames < 1:
         parser.error(f"--frames must be 1 or more, not {args.frames}")
+    if args.screenshot is not None and (problem := output_problem(args.screenshot)):
+        print(f"python -m game.lab: --screenshot: {problem}", file=sys.stderr)
+        return 1  # like the game: a file that cannot be written
     if args.screenshot is not None:
         return screenshot(args.scene, args.screenshot, args.frames)
     return window(args.scene)
