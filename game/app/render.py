@@ -359,9 +359,3 @@ class WorldRenderer:
         while x < target.get_width():
             target.blit(scenery, (x, 0))
             x += scenery_w
-
-
-def draw_world(target: pygame.Surface, world: World, assets: Assets, frame: int) -> None:
-    """Draw one picture of ``world`` with a renderer made for it (no cache survives the call:
-    for a picture now and then; a window keeps one :class:`WorldRenderer`)."""
-    WorldRenderer(assets).draw(target, world, frame)
