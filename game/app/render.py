@@ -29,11 +29,13 @@ What it teaches:
     new sprite its pictures once (:meth:`WorldRenderer.strip_for`).
   * **Draw static things once.** A tile layer never changes in play, so it is drawn into
     chunks of :data:`CHUNK_PX` pixels square the first time they come into view, and each
-    frame blits the two to six chunks the camera sees instead of up to 252 tiles one by one.
-    Chunks, not one picture of the whole map, so a huge map costs memory only where the
-    camera has been, and at most :data:`MAX_CACHED_CHUNKS` of them are kept.
-  * **Parallax**: the sky scrolls at a fraction of the camera's speed, so it looks far away;
-    it repeats horizontally, so it never runs out.
+    frame blits the two to six chunks of each layer that the camera sees instead of up to
+    252 tiles one by one. Chunks, not one picture of the whole map, so a huge map costs
+    memory only where the camera has been, and at most :data:`MAX_CACHED_CHUNKS` of a layer
+    are kept.
+  * **Parallax**: the clouds and hills scroll at a fraction of the camera's speed, so they
+    look far away, and repeat horizontally, so they never run out; the sky and its sun,
+    further still, do not move at all.
 """
 
 from __future__ import annotations
