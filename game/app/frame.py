@@ -34,7 +34,7 @@ def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = Non
     assets = renderer.assets
     world = world or campaign.world
     renderer.draw(target, world, frame or campaign.ticks)
-    draw_hud(target, campaign, assets)
+    draw_hud(target, campaign, assets, world)
     if debug:
         draw_debug(target, world, assets, fps, update_ms, debug_lines)
     return target

@@ -23,6 +23,7 @@ import pygame
 
 from game.app.assets import Assets
 from game.sim.campaign import Campaign
+from game.sim.world import World
 
 Color = tuple[int, int, int] | tuple[int, int, int, int]
 Anchor = Literal["topleft", "midtop", "topright", "midleft", "center", "midright",
@@ -102,9 +103,13 @@ def _draw_hearts(target: pygame.Surface, assets: Assets, lives: int, start_lives
     return x
 
 
-def draw_hud(target: pygame.Surface, campaign: Campaign, assets: Assets) -> None:
-    """Draw the top bar: hearts for lives, the coins taken in this level of all it holds, the
-    level's title, and the score (coin values and stomps: not a second coin count)."""
+def draw_hud(target: pygame.Surface, campaign: Campaign, assets: Assets,
+             world: World | None = None) -> None:
+    """Draw the top bar: hearts for lives, the coins taken in the level of all it holds, the
+    level's title, and the score (coin values and stomps: not a second coin count). The
+    level is the campaign's, or ``world`` (one just finished, under its banner)."""
+    world = world or campaign.world
+    level = world.level
     width = target.get_width()
     bar = pygame.Rect(0, 0, width, HUD_BAR_H_PX)
     translucent_rect(target, bar, HUD_BAR_COLOR)
@@ -117,14 +122,14 @@ def draw_hud(target: pygame.Surface, campaign: Campaign, assets: Assets) -> None
     coin_x = right + HUD_GAP_PX
     target.blit(coin, (coin_x, mid_y - coin.get_height() // 2))
     coins = draw_text(target, assets.font,
-                      f"{campaign.level_coins}/{len(campaign.world.level.coins)}",
+                      f"{len(level.coins) - len(world.coins)}/{len(level.coins)}",
                       (coin_x + coin.get_width() + ICON_GAP_PX, mid_y), GOLD, anchor="midleft")
 
     score = draw_text(target, assets.font, f"SCORE {campaign.score:0{SCORE_DIGITS}d}",
                       (width - HUD_MARGIN_PX, mid_y), anchor="midright")
 
     room = score.left - coins.right - 2 * HUD_GAP_PX
-    title = fit_text(assets.font, campaign.world.level.title, room)
+    title = fit_text(assets.font, level.title, room)
     if title:
         half = assets.font.size(title)[0] // 2 + HUD_GAP_PX
         centre_x = width // 2  # centred on the screen if it fits there, else in the gap

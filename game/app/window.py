@@ -67,9 +67,25 @@ from game.levels import FIRST_LEVEL, LevelError
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
 from game.sim.campaign import Campaign, Outcome
 from game.sim.fixed_step import FixedStep
+from game.sim.sprite import ANIMATION_HZ
 
 MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT)  # drawn instead of the world
+STILL_SCREENS = (Screen.PAUSED, Screen.ENDED)  # nothing on them moves by itself
+MENU_FPS = 30  # the title and the level select animate at this rate: smooth, half the work
+STILL_FPS = 10  # a still screen only waits for input, so it looks for it this often
 DESKTOP_SHARE_PERCENT = 90  # the window takes at most this much of the desktop each way
+
+
+def frame_rate(screen: Screen) -> int:
+    """How many frames a second ``screen`` is drawn at: play and the level-end banner at the
+    full rate, the animated menus at :data:`MENU_FPS`, still screens at :data:`STILL_FPS`.
+
+    >>> frame_rate(Screen.PLAYING), frame_rate(Screen.TITLE), frame_rate(Screen.PAUSED)
+    (60, 30, 10)
+    """
+    if screen in STILL_SCREENS:
+        return STILL_FPS
+    return MENU_FPS if screen in MENU_SCREENS else TARGET_FPS
 
 
 def window_scale(desktop: tuple[int, int], view: tuple[int, int] = (VIEW_W_PX, VIEW_H_PX),
@@ -133,12 +149,14 @@ def play_in_window(run: Run) -> int:
     levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks and bests read each frame
     attempt = Attempt()
     banner: Banner | None = None
+    dirty, last_shown = True, None  # what a still screen last drew (see step 3)
     while True:
-        frame_s = clock.tick(TARGET_FPS) / 1000.0
-        frame += 1
+        frame_s = clock.tick(frame_rate(menus.screen)) / 1000.0
+        frame += max(1, round(frame_s * ANIMATION_HZ))  # animations keep time at any rate
         entries = level_entries(levels, progress)
         # 1. Events: the window, pads plugged in or out, overlay and fullscreen, menus.
         for event in pygame.event.get():
+            dirty = True  # a still screen is drawn again after any event (a key, an expose)
             if event.type == pygame.QUIT:
                 run.write_outputs(pygame.display.get_surface())
                 return EXIT_OK
@@ -238,7 +256,12 @@ def play_in_window(run: Run) -> int:
                     held_over.begin(held_keys(keys) | pads.held(buttons))
 
         # 3. Draw: the world, HUD and overlay (or a menu in their place), then any screen on
-        # top, then a problem to report, if there is one.
+        # top, then a problem to report, if there is one. A still screen (pause, game over,
+        # the win) is drawn once, and again only after an event or a change of what it shows.
+        shown = (menus, notice, reload_error, debug)
+        if menus.screen in STILL_SCREENS and not dirty and shown == last_shown:
+            continue
+        dirty, last_shown = False, shown
         target = pygame.display.get_surface()
         if menus.screen not in MENU_SCREENS:
             render_frame(run.campaign, debug=debug, renderer=renderer, frame=frame,

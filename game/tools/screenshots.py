@@ -4,14 +4,30 @@ Where it sits: beside the game, not in it. Each picture is one scripted headless
 shipped level, stopped at a chosen tick and saved with ``--screenshot`` (and ``--debug``
 where the picture shows the overlay), exactly as a reader could run it by hand: the command
 for each is printed as it goes. The pictures land in ``assets/screenshots/``.
+
+One picture cannot come from a headless run, because a headless run has no level-end
+banner (the banner is a pause of the window): ``level-end.png`` plays the first level's
+winning script in this process and draws its last frame with the window's own drawing code,
+:func:`game.app.frame.render_frame` and :meth:`game.app.banner.Banner.draw`.
 """
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 from dataclasses import dataclass
 from pathlib import Path
+
+import pygame
+
+from game.app.assets import load_assets
+from game.app.banner import BANNER_S, Banner
+from game.app.frame import render_frame
+from game.levels import FIRST_LEVEL, load_level
+from game.sim.camera import VIEW_H_PX, VIEW_W_PX
+from game.sim.campaign import Campaign
+from game.sim.inputs import InputScript
 
 ROOT = Path(__file__).resolve().parents[2]
 SHOTS = ROOT / "assets" / "screenshots"
@@ -45,12 +61,34 @@ SHOTS_TO_TAKE = (
 )
 
 
+def level_end_picture(path: Path) -> None:
+    """The first level's banner, fully up, over the level just finished, as the window
+    draws it (a first clear: no best time saved before)."""
+    os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+    pygame.display.init()
+    pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX))
+    script = InputScript.load(ROOT / "tests" / "scripts" / f"{FIRST_LEVEL.stem}.txt")
+    campaign = Campaign(FIRST_LEVEL, loader=lambda level: load_level(level, images=True))
+    finishing = campaign.world
+    while not campaign.results:
+        finishing = campaign.world
+        campaign.tick(script.held_at(campaign.ticks))
+    banner = Banner(campaign.results[-1], None, world=finishing)
+    banner.advance(BANNER_S / 2)  # every line is up by then
+    frame = render_frame(campaign, debug=False, world=finishing)
+    banner.draw(frame, load_assets())
+    pygame.image.save(frame, str(path))
+    pygame.display.quit()
+
+
 def main() -> None:
     SHOTS.mkdir(parents=True, exist_ok=True)
     for shot in SHOTS_TO_TAKE:
         command = shot.command()
         print(" ".join(["python", *command[1:]]))
         subprocess.run(command, cwd=ROOT, check=True)
+    print("level-end.png: the first level's winning script, drawn with the banner")
+    level_end_picture(SHOTS / "level-end.png")
 
 
 if __name__ == "__main__":
