@@ -10,18 +10,21 @@ one exact position and derive the Rect from it in one place (:meth:`game.sim.bod
 then read ``obj.rect`` wherever you need it.
 
 Each form is timed in a loop over many bodies; the empty loop is timed too, so the table
-gives both the raw cost and the cost net of the loop.
+gives the raw cost, the cost net of the loop, and what a copy costs on top of the plain read,
+each a median of interleaved rounds with its 95 % interval. The last is a difference in ns,
+not a ratio: net of the loop the read costs a few ns, and dividing by a few ns divides by
+noise.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
-from statistics import median
 
 import pygame
 
 from game.bench import charts
+from game.bench.intervals import median_interval, paired_difference
 from game.bench.records import Row, markdown_table, values
 from game.bench.sizes import Sizes
 from game.bench.timing import Case, interleaved
@@ -60,21 +63,29 @@ def measure(sizes: Sizes) -> list[Row]:
     bodies = [Body(Box(i * 3.5, 40.0, 12, 14)) for i in range(sizes.cache_objects)]
     cases = [Case(name, run, ops=len(bodies)) for name, run in loops(bodies).items()]
     return [Row(CHART, name, "access", r, s * 1e9, "ns/access")
-            for name, seconds in interleaved(cases, sizes.rounds, sizes.min_s).items()
+            for name, seconds in interleaved(cases, sizes.verdict_rounds, sizes.min_s).items()
             for r, s in enumerate(seconds)]
 
 
 def table(rows: list[Row]) -> tuple[list[str], list[list[str]]]:
-    """Header and body of the results table: raw, net of the loop, and relative cost."""
-    loop = median(values(rows, method=LOOP, unit="ns/access"))
-    net = {form: median(values(rows, method=form, unit="ns/access")) - loop for form in FORMS}
-    body = [[LOOP, f"{loop:.0f}", "", ""]]
+    """Header and body of the results table: each form's time, net of the loop, and what it
+    costs on top of reading ``obj.rect``, all in ns with 95 % intervals.
+
+    The cost over ``obj.rect`` is a difference, not a ratio: reading the attribute costs a
+    few ns net of the loop, and a ratio to a few ns is mostly noise.
+    """
+    def times(method: str) -> list[float]:
+        return values(rows, method=method, unit="ns/access")
+
+    loop = times(LOOP)
+    body = [[LOOP, median_interval(loop).text(), "", ""]]
     for form in FORMS:
-        raw = net[form] + loop
-        relative = net[form] / net[FORMS[0]] if net[FORMS[0]] > 0 else float("nan")
-        body.append([form, f"{raw:.0f}", f"{net[form]:.0f}", f"{relative:.1f}x"])
+        extra = ("" if form == FORMS[0] else
+                 paired_difference(times(form), times(FORMS[0])).text())
+        body.append([form, median_interval(times(form)).text(),
+                     paired_difference(times(form), loop).text(), extra])
     return ["way of getting the rect", "ns per access", "net of the loop (ns)",
-            "net cost vs obj.rect"], body
+            "more than obj.rect (ns)"], body
 
 
 def markdown(rows: list[Row]) -> str:

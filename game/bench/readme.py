@@ -14,10 +14,12 @@ from game.bench import (
     game_step,
     grid_cells,
     narrow,
+    peer,
     targets,
     tunnelling,
     walls,
 )
+from game.bench.intervals import median_interval, paired_ratio
 from game.bench.records import Row, markdown_table, values
 from game.bench.sizes import Sizes
 from game.bench.targets import Target
@@ -100,10 +102,14 @@ def broad_text(rows: list[Row]) -> str:
         fits = [n for n, ms in at[method].items() if ms <= budget_ms]
         return f"{max(fits):,}" if fits else "none"
 
-    n_mid = 1000 if all(1000 in at[m] for m in (broad.GRID, broad.GROUPCOLLIDE)) else None
-    mid = (f" At N = 1,000 one frame costs {at[broad.GROUPCOLLIDE][1000]:.1f} ms with "
-           f"groupcollide(G, G) and {at[broad.GRID][1000]:.2f} ms with the grid."
-           if n_mid else "")
+    n = broad.verdict_n(rows)
+    mid = (f" At N = {n:,} (timed in more rounds, for the targets) one frame costs "
+           f"{at[broad.GROUPCOLLIDE][n]:.1f} ms with groupcollide(G, G), "
+           f"{at[broad.COLLIDELISTALL][n]:.2f} ms with collidelistall and "
+           f"{at[broad.GRID][n]:.2f} ms with the grid: the grid is "
+           f"{broad.faster_than(rows, broad.GROUPCOLLIDE, n).text()}x and "
+           f"{broad.faster_than(rows, broad.COLLIDELISTALL, n).text()}x faster "
+           "[95 % intervals]." if n is not None else "")
     return (
         "**Broad phase** (`broad_phase.png`). Across, N moving boxes in the scene; up, the "
         "time of one frame (every box moved 0 to 2 px, the method brought up to date, every "
@@ -128,8 +134,8 @@ def cells_text(rows: list[Row]) -> str:
         f"**Grid cell size** (`grid_cells.png`). The same grid at N = {rows[0].method.split()[-1]}"
         f" with cells from {factors[0]} to {factors[-1]} typical body sizes (16 px) across: "
         f"{spread}. Cells near the body size file each box under several cells; big cells "
-        f"hold crowds. The fastest here was {best}x; the game uses "
-        "`game.collision.methods.GRID_CELL_SIZE_FACTOR`.")
+        f"hold crowds. The smallest factor within {grid_cells.NEAR_FASTEST:.0%} of the "
+        f"fastest was {best}x; the game uses `game.collision.methods.GRID_CELL_SIZE_FACTOR`.")
 
 
 def walls_text(rows: list[Row]) -> str:
@@ -139,6 +145,7 @@ def walls_text(rows: list[Row]) -> str:
     def cost(method: str, wall_map: str) -> float:
         return median(values(rows, method=method, parameter=wall_map, unit="µs/query"))
 
+    wins = walls.lookup_wins_from(rows)
     return (
         "**Walls** (`walls.png`). Across, the map size in tiles (the first level's tiles "
         "repeated to fill it; the labels give the number of wall rectangles); up, the time "
@@ -148,7 +155,11 @@ def walls_text(rows: list[Row]) -> str:
         f"sprite grows with the walls, from {cost(walls.SPRITES, small):.1f} µs to "
         f"{cost(walls.SPRITES, big):,.0f} µs; `collidelistall` runs the same scan in C, "
         f"{cost(walls.RECTS, small):.1f} to {cost(walls.RECTS, big):,.0f} µs: cheaper per "
-        "wall, still proportional to the walls. All three find the same walls.")
+        "wall, still proportional to the walls, and "
+        + (f"the lookup beats it from the {wins} map on "
+           f"({walls.tiles_of(wins):,} tiles: `TILE_LOOKUP_FROM_TILES`)."
+           if wins else "the lookup never beats it here.")
+        + " All three find the same walls.")
 
 
 def caching_text(rows: list[Row]) -> str:
@@ -156,25 +167,61 @@ def caching_text(rows: list[Row]) -> str:
         "**The caching myth** (`caching.png`, `caching.csv`). Reading `obj.rect` is an "
         "attribute lookup that returns the same Rect; `obj.rect.copy()` and `Rect(obj.rect)` "
         "build a new Rect every time. The loop over the bodies is timed alone too, so the "
-        "net column is the access itself. Copying is the expensive way to \"cache\" a rect, "
-        "and the copy is stale as soon as the body moves.\n\n" + caching.markdown(rows))
+        "net column is the access itself, and the last column what a copy costs on top of "
+        "the read (a difference in ns: net of the loop the read costs so little that a ratio "
+        "to it would divide by noise). Copying is the expensive way to \"cache\" a rect, "
+        "and the copy is stale as soon as the body moves. Medians of interleaved rounds "
+        "[95 % intervals].\n\n" + caching.markdown(rows))
 
 
 def game_text(rows: list[Row]) -> str:
-    played = next(r.method for r in rows if r.parameter == "p95")
-    narrow_ms = median(values(rows, method=game_step.NARROW, unit=game_step.UPDATE))
-    wide_ms = median(values(rows, method=game_step.WIDE, unit=game_step.UPDATE))
+    played = game_step.played_line(rows)[0]
     return (
-        f"**The game's collision step** (`game_step.png`). Left: {played} played to its exit "
-        "by its winning script, the collision part of every tick (`world.stats.collision_s`) "
-        "in ms, median over the plays; the dashed line is the 2 ms budget, the dotted one "
-        f"the 95th percentile, {game_step.p95_ms(rows):.3f} ms. Where the line steps down, a "
-        "body has left the level (an enemy stomped): the work follows the bodies. Right: the "
-        "whole `World.step` of a 40 x 12 "
-        f"arena and of the same arena in a map {game_step.WIDTH_FACTOR}x wider, same bodies and "
-        f"inputs, ticks interleaved: median {narrow_ms:.3f} ms against {wide_ms:.3f} ms "
-        f"({game_step.width_ratio(rows):.2f}x). The update cost follows the bodies, not "
-        "the map.")
+        f"**The game's step** (`game_step.png`). Left: {played} played to its exit by its "
+        "winning script, the CPU time of every tick in ms, median over the plays; the "
+        "dotted line is the 95th percentile of that line, "
+        f"{game_step.p95_ms(rows):.3f} ms, and the dashed one the 2 ms share of a frame. "
+        "Where the line steps down, a body has left the level (an enemy stomped): the work "
+        "follows the bodies. Middle: the whole `World.step` of a 40 x 12 arena and of the "
+        f"same arena in a map {game_step.WIDTH_FACTOR}x wider, same bodies and inputs: "
+        f"{game_step.ratio(rows, game_step.WIDE, game_step.NARROW).text()}x the time. Right: "
+        f"the wide arena with {game_step.MANY_PLATFORMS} moving platforms against "
+        f"{game_step.FEW_PLATFORMS}, all far from the bodies: "
+        f"{game_step.ratio(rows, game_step.MANY, game_step.FEW).text()}x the time "
+        "[95 % intervals over the rounds].")
+
+
+def peer_text(rows: list[Row]) -> str:
+    def us(method: str) -> str:
+        return median_interval(peer.per_update(rows, method)).text()
+
+    moves = peer.figure_of(rows, "The Summit", "recorded moves")
+    walls_n = peer.figure_of(rows, "The Summit", "solid tiles")
+    flights = peer.FLIGHTS_PER_SPEED * len(peer.SPEEDS_PX)
+    common = (
+        f"**The peer** (`peer.png`). The same {walls_n:.0f} solid tiles of The Summit and the "
+        f"same {moves:.0f} recorded moves of its player, made by each method from the same "
+        f"boxes. Per update: the plain-float sweep {us(peer.PLAIN)} µs, `move_x` + `move_y` "
+        f"{us(peer.GAME)} µs, the game's whole `World.step` {us(peer.STEP)} µs per body, the "
+        f"`spritecollide` tutorial loop {us(peer.TUTORIAL)} µs"
+        f" (medians [95 % intervals]). The tutorial loop tunnelled "
+        f"{peer.tunnelled(rows, peer.TUTORIAL)} of {flights} flights at 8 to 64 px per tick "
+        f"and jitters {peer.figure_of(rows, peer.TUTORIAL, 'px jitter at rest'):.2f} px at "
+        "rest; the game's moves tunnelled "
+        f"{peer.tunnelled(rows, peer.GAME)}, stop flush and never jitter.")
+    if peer.skipped(rows):
+        return common + (" Arcade was not installed, so its engine was skipped "
+                         "(`pip install -e '.[peers]'` adds it).")
+    ratio = paired_ratio(peer.per_update(rows, peer.ARCADE), peer.per_update(rows, peer.GAME))
+    return common + (
+        f" Arcade's `PhysicsEnginePlatformer.update` took {us(peer.ARCADE)} µs, "
+        f"{ratio.text()}x as long as `move_x` + `move_y`; it ended "
+        f"{peer.figure_of(rows, peer.ARCADE, peer.SAME):.0f} of the {moves:.0f} moves where "
+        "the game does (within 0.01 px; it rounds its y to 1/100 px and lands in quarter "
+        f"pixels), tunnelled {peer.tunnelled(rows, peer.ARCADE)} of {flights} flights, and "
+        "stopped on average "
+        f"{peer.figure_of(rows, peer.ARCADE, 'px short of flush (mean)'):.2f} px short of the "
+        "face it was blocked by (it backs off by whole pixels).")
 
 
 def choices(results: dict[str, list[Row]]) -> list[tuple[str, str, str]]:
@@ -182,32 +229,45 @@ def choices(results: dict[str, list[Row]]) -> list[tuple[str, str, str]]:
     found."""
     measured_n = broad.crossover(results[broad.CHART], broad.GRID, broad.BRUTE)
     best = grid_cells.fastest(results[grid_cells.CHART])
+    wins = walls.lookup_wins_from(results[walls.CHART])
     return [("BROAD_PHASE_CROSSOVER_N", f"{methods.BROAD_PHASE_CROSSOVER_N}", f"{measured_n}"),
-            ("GRID_CELL_SIZE_FACTOR", f"{methods.GRID_CELL_SIZE_FACTOR:g}", best)]
+            ("GRID_CELL_SIZE_FACTOR", f"{methods.GRID_CELL_SIZE_FACTOR:g}", best),
+            ("TILE_LOOKUP_FROM_TILES", f"{methods.TILE_LOOKUP_FROM_TILES}",
+             f"{walls.tiles_of(wins) if wins else None}")]
 
 
 def methods_text(results: dict[str, list[Row]]) -> str:
-    rows = [[name, measured, where] for (name, _, measured), where in zip(
-        choices(results), ["the crossover on `broad_phase.png`", "fastest on `grid_cells.png`"],
+    rows = [[name, in_code, measured, where] for (name, in_code, measured), where in zip(
+        choices(results), ["the crossover on `broad_phase.png`",
+                           "the smallest factor within 5 % of the fastest on `grid_cells.png`",
+                           "where the lookup overtakes `collidelistall` on `walls.png`"],
         strict=True)]
-    return markdown_table(["threshold in game/collision/methods.py", "this run", "from"], rows)
+    return markdown_table(["threshold in game/collision/methods.py", "in the code", "this run",
+                           "from"], rows)
 
 
 def text(results: dict[str, list[Row]], checked: list[Target], sizes: Sizes,
          footnote: str) -> str:
+    command = "python -m game.bench" + ("" if sizes.name == "full" else f" --{sizes.name}")
     return "\n\n".join([
         "# Benchmark charts",
-        f"Written by `python -m game.bench` ({sizes.name} run) together with the charts and "
+        f"Written by `{command}` ({sizes.name} run) together with the charts and "
         "the CSVs in this folder; every figure below is a median of interleaved rounds in "
         "those CSVs (long format: chart, method, parameter, round, value, unit). Measured on: "
         f"{footnote}. Absolute times depend on the machine; the ratios travel better.",
-        "## Targets\n\n" + targets.markdown(checked),
+        "## Targets\n\nEach ratio is a median of at least 30 interleaved rounds with its "
+        "bootstrap 95 % interval in brackets; a target passes only when the whole interval "
+        "clears its limit (`targets.png` draws them).\n\n" + targets.markdown(checked)
+        + f"\n\n{sum(t.passed for t in checked)} of {len(checked)} targets met"
+        + (f", {sum(bool(t.skipped) for t in checked)} skipped."
+           if any(t.skipped for t in checked) else "."),
         "## The game's choices\n\nThe scene thresholds in `game/collision/methods.py` are set "
         "from, and "
         "cite, the committed run of this bench. A new run that disagrees is a reason to look "
         "again rather than to edit them blindly: where two lines run close, a crossover moves "
         "with noise.\n\n" + methods_text(results),
         "## Reading the charts",
+        peer_text(results[peer.CHART]),
         narrow_text(results[narrow.CHART]),
         tunnelling_text(results[tunnelling.CHART], sizes.tunnel_flights),
         broad_text(results[broad.CHART]),

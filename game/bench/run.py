@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from time import perf_counter
+from time import perf_counter, process_time
 
 from game.bench import (
     broad,
@@ -19,12 +19,13 @@ from game.bench import (
     grid_cells,
     machine,
     narrow,
+    peer,
     readme,
     targets,
     tunnelling,
     walls,
 )
-from game.bench.records import Row, write_csv
+from game.bench.records import Row, read_csv, write_csv
 from game.bench.sizes import Sizes
 
 DEFAULT_OUT = Path(__file__).resolve().parent.parent.parent / "assets" / "charts"
@@ -40,6 +41,7 @@ class Chart:
 
 
 CHARTS = (
+    Chart(peer.CHART, peer.measure, peer.draw),
     Chart(narrow.CHART, narrow.measure, narrow.draw),
     Chart(tunnelling.CHART, tunnelling.measure, tunnelling.draw),
     Chart(broad.CHART, broad.measure, broad.draw),
@@ -50,34 +52,56 @@ CHARTS = (
 )
 
 
+def command(sizes: Sizes) -> str:
+    """The command that makes a run of these sizes."""
+    return "python -m game.bench" + ("" if sizes.name == "full" else f" --{sizes.name}")
+
+
 def run(sizes: Sizes, out: Path, echo: Callable[[str], None] = print,
         ) -> tuple[dict[str, list[Row]], list[targets.Target]]:
     """Measure, write ``<chart>.csv`` and ``<chart>.png`` for every chart, then the targets
-    (``targets.csv``, ``targets.md``, ``target_runs.csv``) and ``README.md``."""
+    (``targets.csv``, ``targets.md``, ``targets.png``) and ``README.md``."""
     out.mkdir(parents=True, exist_ok=True)
-    footnote = f"{machine.footnote()} · {sizes.name} run"
+    footnote = f"{machine.footnote()} · made by {command(sizes)}"
     results: dict[str, list[Row]] = {}
     for chart in CHARTS:
-        started = perf_counter()
+        started, cpu = perf_counter(), process_time()
         rows = chart.measure(sizes)
         results[chart.name] = rows
         write_csv(out / f"{chart.name}.csv", rows)
         chart.draw(rows, out, footnote)
-        echo(f"{chart.name:>14}: {perf_counter() - started:5.1f} s  -> {chart.name}.png, .csv")
+        echo(f"{chart.name:>14}: {perf_counter() - started:5.1f} s ({process_time() - cpu:4.1f} s "
+             f"CPU)  -> {chart.name}.png, .csv")
+    return results, conclude(results, sizes, out, footnote, echo)
+
+
+def redraw(sizes: Sizes, out: Path, echo: Callable[[str], None] = print,
+           ) -> tuple[dict[str, list[Row]], list[targets.Target]]:
+    """Draw the charts, the targets and the README again from the CSVs already in ``out``
+    (measured by a run of these sizes on this machine), measuring nothing."""
+    footnote = f"{machine.footnote()} · made by {command(sizes)}"
+    results = {chart.name: read_csv(out / f"{chart.name}.csv") for chart in CHARTS}
+    for chart in CHARTS:
+        chart.draw(results[chart.name], out, footnote)
+        echo(f"{chart.name:>14}: redrawn from {chart.name}.csv")
+    return results, conclude(results, sizes, out, footnote, echo)
+
+
+def conclude(results: dict[str, list[Row]], sizes: Sizes, out: Path, footnote: str,
+             echo: Callable[[str], None]) -> list[targets.Target]:
+    """Check the targets and write them, their chart and the README; note any threshold of
+    :mod:`game.collision.methods` this run disagrees with."""
     started = perf_counter()
-    broad_checked, target_rows = targets.broad_targets(sizes)
-    checked = [*broad_checked,
-               *targets.wall_targets(results[walls.CHART], sizes),
-               *targets.tunnelling_targets(results[tunnelling.CHART]),
-               *targets.game_targets(results[game_step.CHART])]
-    write_csv(out / "target_runs.csv", target_rows)
+    checked = targets.check(results, sizes)
     (out / "targets.csv").write_text(targets.csv_text(checked), encoding="utf-8")
     (out / "targets.md").write_text(targets.markdown(checked) + "\n", encoding="utf-8")
+    targets.draw(checked, out, footnote)
     (out / "README.md").write_text(readme.text(results, checked, sizes, footnote),
                                    encoding="utf-8")
-    echo(f"{'targets':>14}: {perf_counter() - started:5.1f} s  -> targets.csv, .md, README.md")
+    echo(f"{'targets':>14}: {perf_counter() - started:5.1f} s  -> targets.csv, .md, .png, "
+         "README.md")
     for name, in_code, measured in readme.choices(results):
         if in_code != measured:
             echo(f"note: game/collision/methods.py has {name} = {in_code}; "
                  f"this run measured {measured}")
-    return results, checked
+    return checked

@@ -1,10 +1,11 @@
 """Which collision method each scene uses, and the measured thresholds behind each choice.
 
-Where it sits: beside the broad phases, above :mod:`game.collision.broad.brute_force`. A scene that
-has to
-find overlapping pairs asks :func:`choose_broad_phase` how, or calls
-:func:`build_broad_phase`; the thresholds are named constants, and each one's docstring cites
-the benchmark result that set it (``python -m game.bench``, committed in ``assets/charts/``).
+Where it sits: beside the broad phases, above :mod:`game.collision.broad.brute_force`. A scene
+that has to find overlapping pairs asks :func:`choose_broad_phase` how, or calls
+:func:`build_broad_phase`; one with walls can ask :func:`choose_walls`. The thresholds are
+named constants, and each one's docstring cites the benchmark result that set it
+(``python -m game.bench``, committed in ``assets/charts/``); ``tests/test_bench.py`` checks
+each against the committed CSVs, so the code and the run the README quotes agree.
 
 What it teaches: **model no more than a scene needs.** A spatial structure costs code and
 bookkeeping on every move; it only pays once there are enough things to pair up. The level's
@@ -13,14 +14,18 @@ the few dozen things a player can touch are tested one by one against the path i
 (coins through ``pygame.sprite.groupcollide``; see :meth:`game.sim.world.World.step`). The
 game makes those choices in that code, once, and reads nothing here. Only a crowd of movers
 (the crate demo, the stress scene, the lab's crowds) needs a broad phase, and asks this
-module which; below the crossover plain brute force is both simpler and faster.
+module which; below the crossover plain brute force is both simpler and faster. The same
+holds for walls: on a map of a few hundred tiles, scanning every wall rect with
+``collidelistall`` (a loop in C) is as fast as the lookup. The levels keep the lookup at
+every size (one code path, a few µs a query at worst); :func:`choose_walls` says from which
+map size the lookup wins, for a scene that weighs a scan against it.
 
 >>> choose_broad_phase(5), choose_broad_phase(5_000)
 ('brute_force', 'grid')
 >>> type(build_broad_phase(5_000, body_size_px=16)).__name__
 'SpatialGrid'
 >>> grid_cell_size_px(16)
-32.0
+48.0
 """
 
 from __future__ import annotations
@@ -31,21 +36,31 @@ from game.collision.broad.brute_force import BroadPhase, BruteForce
 from game.collision.broad.spatial_grid import SpatialGrid
 
 WALLS: Final = "tile_grid"
-"""Bodies meet walls through :meth:`TileGrid.entries_in` and the swept axis moves: in the
-committed run the lookup took 1.00x as long on an 800x160 map as on a 200x40 one, and was
-42.0x faster than ``spritecollide`` over all 2,413 walls of the 200x40 map
-(``assets/charts/walls.csv``, ``assets/charts/targets.csv``)."""
+"""Bodies meet walls through :meth:`TileGrid.entries_in` and the swept axis moves: the lookup
+costs the same on a map of 500 tiles or of 128,000, while a scan of every wall grows with
+the walls (``assets/charts/walls.csv``; the flatness and the lead over ``spritecollide``
+and ``collidelistall`` are targets in ``assets/charts/targets.csv``)."""
+
+WALL_SCAN: Final = "collidelistall"
+"""Below :data:`TILE_LOOKUP_FROM_TILES` a scan of every wall rect with
+``Rect.collidelistall`` (its loop in C) is as fast as the tile lookup or faster."""
+
+TILE_LOOKUP_FROM_TILES: Final = 2000
+"""The tile lookup beats ``collidelistall`` over every wall from a map of this many tiles
+on (the smallest map of the committed run from which it wins at every bigger size, marked
+on ``walls.png``; ``tests/test_bench.py`` checks it against ``assets/charts/walls.csv``)."""
 
 BROAD_PHASE_CROSSOVER_N: Final = 10
-"""The grid beats brute force (every pair tested in Python) from N = 10 movers up in the
-committed run (``assets/charts/broad_phase.csv``, marked on ``broad_phase.png``). The two
-lines run close between 10 and 30, so runs place it anywhere there; below it, brute force
-is as fast and has no structure to keep up to date."""
+"""The grid beats brute force (every pair tested in Python) from this many movers up in the
+committed run (``assets/charts/broad_phase.csv``, marked on ``broad_phase.png``;
+``tests/test_bench.py`` checks it against that file). The two lines run close between 10
+and 30, so runs place it anywhere there; below it, brute force is as fast and has no
+structure to keep up to date."""
 
-GRID_CELL_SIZE_FACTOR: Final = 2.0
-"""A grid cell is this many typical body sizes across: the fastest of the factors 1 to 6
-tried in the committed run, 5.80 ms per frame for 2,000 movers against 8.20 ms with cells
-one body across (``assets/charts/grid_cells.csv``)."""
+GRID_CELL_SIZE_FACTOR: Final = 3.0
+"""A grid cell is this many typical body sizes across: of the factors tried in the committed
+run, the smallest within 5 % of the fastest (``assets/charts/grid_cells.csv``, drawn on
+``grid_cells.png``; ``tests/test_bench.py`` checks it against that file)."""
 
 
 def choose_broad_phase(n: int) -> str:
@@ -53,6 +68,18 @@ def choose_broad_phase(n: int) -> str:
     if n < 0:
         raise ValueError(f"a scene cannot hold {n} movers")
     return "brute_force" if n < BROAD_PHASE_CROSSOVER_N else "grid"
+
+
+def choose_walls(cols: int, rows: int) -> str:
+    """How a map of ``cols`` x ``rows`` tiles should find the walls near a body:
+    :data:`WALL_SCAN` below :data:`TILE_LOOKUP_FROM_TILES` tiles, :data:`WALLS` from there.
+
+    >>> choose_walls(20, 10), choose_walls(200, 40)
+    ('collidelistall', 'tile_grid')
+    """
+    if cols < 0 or rows < 0:
+        raise ValueError(f"a map cannot be {cols} x {rows} tiles")
+    return WALL_SCAN if cols * rows < TILE_LOOKUP_FROM_TILES else WALLS
 
 
 def grid_cell_size_px(body_size_px: float) -> float:
