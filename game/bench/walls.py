@@ -1,7 +1,7 @@
 """Chart 4, walls: one body asking "which walls do I touch?" as the map grows.
 
 Where it sits: the fourth chart of ``python -m game.bench``. It times the game's wall lookup,
-:meth:`TileGrid.shapes_in` (what :mod:`game.sim.movement` calls in every axis pass), against the
+:meth:`TileGrid.entries_in` (what :mod:`game.sim.movement` calls in every axis pass), against the
 two ways a pygame program often does it: ``pygame.sprite.spritecollide`` over a group holding
 every wall sprite, and ``Rect.collidelistall`` over a list of every wall rect.
 
@@ -35,13 +35,13 @@ from game.bench.sizes import Sizes
 from game.bench.timing import Case, interleaved
 from game.collision.aabb import Box
 from game.levels import FIRST_LEVEL, load_level
-from game.sim.tilegrid import TileGrid, TileShape
+from game.sim.tilegrid import Entry, TileGrid, TileShape
 
 CHART = "walls"
 SEED = 4
 BODY_W_PX, BODY_H_PX = 12, 14
 PIXEL = pygame.Surface((1, 1))   # every sprite needs an image; none is ever drawn here
-LOOKUP = "tile grid (TileGrid.shapes_in)"
+LOOKUP = "tile grid (TileGrid.entries_in)"
 SPRITES = "spritecollide over every wall sprite"
 RECTS = "Rect.collidelistall over every wall rect"
 SCAN_TESTS = 200_000   # wall tests a scanning method makes per timed call, at most
@@ -111,9 +111,11 @@ class WallMap:
         grid, walls, rects, queries = self.grid, self.walls, self.rects, self.queries
         body = Wall(Box(0, 0, BODY_W_PX, BODY_H_PX))   # the querying body, as a sprite
         query_rects = [box.to_rect() for box in queries[:scanned]]
+        query_edges = [(b.x, b.y, b.x + b.w, b.y + b.h) for b in queries]
 
-        def lookup() -> list[list[TileShape]]:
-            return [grid.shapes_in(box) for box in queries]
+        def lookup() -> list[list[Entry]]:
+            entries_in = grid.entries_in
+            return [entries_in(*edges) for edges in query_edges]
 
         def sprites() -> list[list[Wall]]:
             found = []
@@ -130,7 +132,7 @@ class WallMap:
     def answers_agree(self) -> bool:
         """Do the three methods find the same walls for every query?"""
         found = self.methods()
-        by_lookup = [{id(s) for s in hits} for hits in found[LOOKUP]()]
+        by_lookup = [{id(entry[5]) for entry in hits} for hits in found[LOOKUP]()]
         by_sprites = [{id(w.shape) for w in hits} for hits in found[SPRITES]()]
         by_rects = [{id(self.shapes[i]) for i in hits} for hits in found[RECTS]()]
         return by_lookup == by_sprites == by_rects
@@ -165,13 +167,14 @@ def measure(sizes: Sizes) -> list[Row]:
 
 def lookup_wins_from(rows: list[Row]) -> str | None:
     """The smallest map from which the tile lookup beats ``collidelistall`` over all walls on
-    every bigger map measured (median time per query); None if it never does."""
+    every bigger map measured: ``collidelistall``'s time over the lookup's, round by round,
+    has its whole 95 % interval above 1. None if it never does."""
     maps = sorted({r.parameter for r in rows if r.unit == "µs/query"}, key=tiles_of)
     winning_from: str | None = None
     for wall_map in maps:
-        lookup = median(values(rows, method=LOOKUP, parameter=wall_map, unit="µs/query"))
-        scan = median(values(rows, method=RECTS, parameter=wall_map, unit="µs/query"))
-        if lookup >= scan:
+        lead = paired_ratio(values(rows, method=RECTS, parameter=wall_map, unit="µs/query"),
+                            values(rows, method=LOOKUP, parameter=wall_map, unit="µs/query"))
+        if not lead.clears(">=", 1.0):
             winning_from = None
         elif winning_from is None:
             winning_from = wall_map

@@ -42,13 +42,14 @@ the walls (``assets/charts/walls.csv``; the flatness and the lead over ``spritec
 and ``collidelistall`` are targets in ``assets/charts/targets.csv``)."""
 
 WALL_SCAN: Final = "collidelistall"
-"""Below :data:`TILE_LOOKUP_FROM_TILES` a scan of every wall rect with
-``Rect.collidelistall`` (its loop in C) is as fast as the tile lookup or faster."""
+"""Below :data:`TILE_LOOKUP_FROM_TILES` the lookup was not measurably faster than a scan of
+every wall rect with ``Rect.collidelistall`` (its loop in C), which needs no grid at all."""
 
-TILE_LOOKUP_FROM_TILES: Final = 2000
-"""The tile lookup beats ``collidelistall`` over every wall from a map of this many tiles
-on (the smallest map of the committed run from which it wins at every bigger size, marked
-on ``walls.png``; ``tests/test_bench.py`` checks it against ``assets/charts/walls.csv``)."""
+TILE_LOOKUP_FROM_TILES: Final = 500
+"""The tile lookup beats ``collidelistall`` over every wall from a map of this many tiles on:
+the smallest map of the committed run from which, on every bigger map too, the scan's time
+over the lookup's has its whole 95 % interval above 1 (``assets/charts/walls.csv``, marked
+on ``walls.png``; ``tests/test_bench.py`` checks it against that file)."""
 
 BROAD_PHASE_CROSSOVER_N: Final = 10
 """The grid beats brute force (every pair tested in Python) from this many movers up in the
