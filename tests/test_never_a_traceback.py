@@ -342,3 +342,14 @@ def test_random_numbers_anywhere_in_a_map_are_one_sentence_or_a_playable_level(
         campaign = Campaign(path, loader=load_level)
         for _ in range(60):
             campaign.tick(frozenset({Action.RIGHT, Action.JUMP}))
+
+
+def test_a_temporary_file_left_by_a_killed_run_goes_when_its_output_is_next_written(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    dead = 2**22 + 12345  # above Linux's largest process id, so no process has it
+    orphan = tmp_path / f".report.{dead}.0123abcd.json"
+    orphan.write_text("{", encoding="utf-8")
+    status, err = outcome(cli.main, ["--headless", "--ticks", "5", "--report",
+                                     str(tmp_path / "report.json")], capsys)
+    assert status == 0, err
+    assert [p.name for p in tmp_path.iterdir()] == ["report.json"]

@@ -14,7 +14,7 @@ What it teaches:
     folder and renames it over the target: on every platform Python supports,
     :func:`os.replace` is atomic, so readers see the old file or the new one, never half.
     A temporary file left by a run that was killed mid-write is removed the next time the
-    same file is read (:func:`remove_orphans`).
+    same file is read or written (:func:`remove_orphans`).
   * **Check an output before the work.** :func:`output_problem` says, before a long run,
     whether the path given for a report can be written at all (a folder, a path under a
     file, a read-only folder, a device that a rename would replace), so a run never ends by
@@ -243,6 +243,7 @@ def write_atomically(path: Path, write: Callable[[Path], None]) -> None:
     problem = output_problem(path)
     if problem is not None:
         raise FileProblem(problem, _cause(problem))
+    remove_orphans(path)  # what a killed writer of this same file left behind
     tmp = path.with_name(f".{path.stem}.{os.getpid()}.{secrets.token_hex(4)}{path.suffix}")
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
