@@ -23,6 +23,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from game.app import cli, files
+from game.app.hud import ELLIPSIS, fit_text
 from game.app.saves import JsonFile, Progress
 from game.app.settings import Settings
 from game.bench import main as bench_main
@@ -353,3 +354,20 @@ def test_a_temporary_file_left_by_a_killed_run_goes_when_its_output_is_next_writ
                                      str(tmp_path / "report.json")], capsys)
     assert status == 0, err
     assert [p.name for p in tmp_path.iterdir()] == ["report.json"]
+
+
+def test_a_20000_character_title_is_fitted_in_a_few_measurements() -> None:
+    class CountingFont:
+        """Measures like a font of 6 px a character, and counts the measurements."""
+
+        def __init__(self) -> None:
+            self.measured = 0
+
+        def size(self, text: str) -> tuple[int, int]:
+            self.measured += 1
+            return 6 * len(text), 9
+
+    font = CountingFont()
+    fitted = fit_text(font, "W" * 20_000, 200)  # type: ignore[arg-type]
+    assert fitted.endswith(ELLIPSIS) and 6 * len(fitted) <= 200 < 6 * (len(fitted) + 1)
+    assert font.measured <= 20  # one per halving, not one per character

@@ -67,11 +67,22 @@ def draw_text(target: pygame.Surface, font: pygame.font.Font, text: str,
 
 
 def fit_text(font: pygame.font.Font, text: str, max_w: int) -> str:
-    """``text``, shortened with an ellipsis if it is wider than ``max_w`` pixels."""
+    """``text``, shortened with an ellipsis if it is wider than ``max_w`` pixels.
+
+    The longest prefix that fits is found by halving (a few measurements, however long the
+    text), not by dropping one character at a time, which costs a measurement per character
+    and took seconds a frame for a 20,000-character title.
+    """
     if font.size(text)[0] <= max_w:
         return text
-    while text and font.size(text + ELLIPSIS)[0] > max_w:
-        text = text[:-1]
+    fits, too_long = 0, len(text)  # the prefix of length `fits` fits; `too_long` does not
+    while too_long - fits > 1:
+        middle = (fits + too_long) // 2
+        if font.size(text[:middle] + ELLIPSIS)[0] <= max_w:
+            fits = middle
+        else:
+            too_long = middle
+    text = text[:fits]
     return text.rstrip() + ELLIPSIS if text else ""
 
 
