@@ -74,7 +74,7 @@ def level_label(path: Path) -> str:
         return path.as_posix()
     try:
         return path.relative_to(Path.cwd()).as_posix()
-    except ValueError:
+    except (ValueError, OSError):  # elsewhere, or the working folder has been deleted
         return path.as_posix()
 
 

@@ -34,7 +34,7 @@ from typing import NoReturn
 
 MAX_ERRORS_PER_MAP = 20  # past this many, the rest of the map is not worth reading
 MAX_QUOTED_CHARS = 40  # a value from the file is quoted at most this long
-MAX_PART_CHARS = 300  # the place or the problem of a message, at most
+MAX_PART_CHARS = 300  # the path, the place or the problem of a message, at most
 
 
 def excerpt(value: object) -> str:
@@ -61,7 +61,7 @@ def _sentence(path: Path | str, where: str, problem: str, fix: str, warning: boo
     where, problem = _clip(where), _clip(problem)
     place = f"{where}: " if where else ""
     label = "warning: " if warning else ""
-    return f"{path}: {place}{label}{problem} — {fix}"
+    return f"{_clip(str(path))}: {place}{label}{problem} — {fix}"
 
 
 class LevelError(Exception):
