@@ -2,7 +2,7 @@
 
 Where it sits: the base of :class:`game.sim.player.Player` and :class:`game.sim.enemy.Enemy`;
 itself a :class:`~game.sim.sprite.BoxSprite`. Only the movement code changes ``box`` (through
-:meth:`BoxSprite.place`, which derives the drawn ``rect`` in the same call).
+:meth:`BoxSprite.place`; the drawn ``rect`` is derived from the box whenever it is read).
 
 What it teaches: pygame 2.6 Rects hold integers, so ``rect.x += 0.4`` never moves anything.
 The true position is the float :class:`~game.collision.aabb.Box`, and a body's moves are

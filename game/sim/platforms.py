@@ -28,8 +28,6 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 
-import pygame
-
 from game.collision.aabb import Box
 from game.sim.sprite import Anchor, BoxSprite
 from game.sim.tilegrid import Entry, TileGrid, TileKind, TileShape, entry_of
@@ -120,15 +118,6 @@ class Platform(BoxSprite):
         self._box = box
 
     @property
-    def rect(self) -> pygame.Rect:
-        self.box  # noqa: B018  (the rect follows the box, even one read late)
-        return self._rect
-
-    @rect.setter
-    def rect(self, rect: pygame.Rect) -> None:
-        self._rect = rect
-
-    @property
     def entry(self) -> Entry:
         """The box as plain floats, for the tile grid's queries (up to date when read)."""
         self.box  # noqa: B018  (reading the box brings it up to date)
@@ -205,25 +194,28 @@ class PlatformIndex:
             for col in range(math.floor(left / grid.tile_w), math.ceil(right / grid.tile_w)):
                 self.cells.setdefault(row * grid.cols + col, []).append(platform)
 
-    def near(self, box: Box) -> set[Platform]:
-        """The platforms whose route region shares a cell with the box (and those off the map)."""
-        grid = self.grid
+    def add_near(self, box: Box, found: set[Platform]) -> None:
+        """Add to ``found`` the platforms whose route region shares a cell with the box (and
+        those off the map)."""
+        if self.outside:
+            found.update(self.outside)
         x, y, w, h = box
-        found = set(self.outside)
         low_x, low_y, high_x, high_y = self.bounds
         if not (w > 0 and h > 0 and x <= high_x and low_x <= x + w and y <= high_y
                 and low_y <= y + h):
-            return found
+            return
+        grid = self.grid
         try:
             first_col, last_col = math.floor(x / grid.tile_w), math.ceil((x + w) / grid.tile_w) - 1
             first_row, last_row = math.floor(y / grid.tile_h), math.ceil((y + h) / grid.tile_h) - 1
         except (ValueError, OverflowError):
-            return found
+            return
         cells, cols = self.cells, grid.cols
         for row in range(max(0, first_row), min(grid.rows - 1, last_row) + 1):
             for col in range(max(0, first_col), min(cols - 1, last_col) + 1):
-                found.update(cells.get(row * cols + col, ()))
-        return found
+                filed = cells.get(row * cols + col)
+                if filed is not None:
+                    found.update(filed)
 
 
 def _number(platform: Platform) -> int:
@@ -253,10 +245,11 @@ class SolidsWithPlatforms:
     def height_px(self) -> int:
         return self.grid.height_px
 
-    def near(self, box: Box) -> set[Platform]:
-        """The platforms a body in ``box`` could meet (see :meth:`PlatformIndex.near`)."""
+    def add_near(self, box: Box, found: set[Platform]) -> None:
+        """Add to ``found`` the platforms a body in ``box`` could meet (see
+        :meth:`PlatformIndex.add_near`)."""
         assert self.index is not None
-        return self.index.near(box)
+        self.index.add_near(box, found)
 
     def entries_in(self, left: float, top: float, right: float, bottom: float,
                    ) -> list[Entry]:

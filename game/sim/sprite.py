@@ -9,10 +9,11 @@ tick moves boxes; before a frame is drawn, the app hands each sprite its picture
 
 What it teaches:
   * **Float box, derived Rect, in one place.** pygame 2.6 Rects hold integers, so the exact
-    position is the float :class:`~game.collision.aabb.Box`, and :meth:`BoxSprite._fit` is
-    the one line that derives ``rect`` from it (``math.floor``, inside ``Box.to_rect``).
-    :meth:`BoxSprite.place` (a move) and :meth:`BoxSprite.show` (a new picture) both end
-    there, so the picture can never lag the box ("ghost rects").
+    position is the float :class:`~game.collision.aabb.Box`, and :attr:`BoxSprite.rect` is
+    the one place the drawn rectangle is derived from it (``math.floor``, inside
+    ``Box.to_rect``). It is worked out when read and kept until the box or the picture
+    changes, so the picture can never lag the box ("ghost rects"), and a tick that nobody
+    draws (headless, tests, the bench) never pays for it.
   * **``image`` and ``rect`` are what is drawn.** ``Group.draw`` blits ``image`` at
     ``rect.topleft``, so ``rect`` is the picture's rectangle, not the hitbox. The art may
     be bigger than the box (hair, ears, a flag's pole); the sprite's :class:`Anchor` says
@@ -29,7 +30,7 @@ What it teaches:
 >>> sprite.update(0)
 >>> sprite.rect                                # a 16x16 picture standing on the box's bottom
 <rect(8, 18, 16, 16)>
->>> sprite.place(Box(30.0, 20.25, 12, 14))
+>>> sprite.place(Box(30.0, 20.25, 12, 14))      # the rect follows when next read
 >>> sprite.rect.topleft
 (28, 18)
 """
@@ -76,7 +77,7 @@ def anchored_box(box: Box, size: tuple[int, int], anchor: Anchor) -> Box:
     Box(x=12.0, y=22.0, w=8, h=8)
     """
     w, h = size
-    x, y, box_w, box_h = box  # plain floats: every body is placed twice a tick
+    x, y, box_w, box_h = box
     if anchor is Anchor.TOP_LEFT:
         return Box(x, y, w, h)
     left = x + (box_w - w) / 2
@@ -110,10 +111,9 @@ class Strip:
 
 
 class BoxSprite(pygame.sprite.Sprite):
-    """A sprite at a float ``box``, drawn as ``image`` at ``rect`` (derived in :meth:`_fit`)."""
+    """A sprite at a float ``box``, drawn as ``image`` at ``rect`` (derived from the two)."""
 
     image: pygame.Surface
-    rect: pygame.Rect
     anchor = Anchor.BOTTOM_CENTRE
 
     def __init__(self, box: Box) -> None:
@@ -121,22 +121,33 @@ class BoxSprite(pygame.sprite.Sprite):
         self.strip: Strip | None = None  # the pictures, once the app has handed them over
         self.box = box
         self.image = pygame.Surface((max(1, math.ceil(box.w)), max(1, math.ceil(box.h))))
-        self._fit()
+        self._fitted: tuple[Box, pygame.Surface] | None = None  # what ``_rect`` was made for
+        self._rect = pygame.Rect(0, 0, 0, 0)
 
     def place(self, box: Box) -> None:
-        """Set the exact position; the picture follows in the same call."""
+        """Set the exact position; the picture follows (``rect`` is derived when read)."""
         self.box = box
-        self._fit()
 
     def show(self, image: pygame.Surface) -> None:
         """Draw ``image`` from now on, anchored on the box."""
-        if image is not self.image:  # the same picture: ``place`` has already fitted it
-            self.image = image
-            self._fit()
+        self.image = image
 
-    def _fit(self) -> None:
-        """The one place ``rect`` is derived: the picture's rectangle anchored on the box."""
-        self.rect = anchored_box(self.box, self.image.get_size(), self.anchor).to_rect()
+    @property
+    def rect(self) -> pygame.Rect:
+        """The one place ``rect`` is derived: the picture's rectangle anchored on the box,
+        worked out again only when the box or the picture is a new one."""
+        box, image = self.box, self.image
+        fitted = self._fitted
+        if fitted is None or fitted[0] is not box or fitted[1] is not image:
+            self._rect = anchored_box(box, image.get_size(), self.anchor).to_rect()
+            self._fitted = (box, image)
+        return self._rect
+
+    @rect.setter
+    def rect(self, rect: pygame.Rect) -> None:
+        """Draw at ``rect`` until the box or the picture changes (pygame's groups may set it)."""
+        self._rect = rect
+        self._fitted = (self.box, self.image)
 
     def dress(self, strip: Strip) -> None:
         """Take the pictures to draw with (the app does this once, before the first frame)."""

@@ -226,8 +226,8 @@ class World:
         for body in bodies:
             body.last_x = move_x(solids, body.box, body.vx * dt)
 
-        # 4. y pass: the same along y from where the x pass stopped; the body is placed (its
-        #    rect derived, once a tick) and the probe looks one pixel below the feet.
+        # 4. y pass: the same along y from where the x pass stopped; the body is placed (once
+        #    a tick) and the probe looks one pixel below the feet.
         for body in bodies:
             if log is not None:
                 log.purpose = "y sweep"
@@ -373,7 +373,7 @@ class World:
         near: set[Platform] = set()
         if self._platform_list:
             for body in bodies:
-                near |= self.solids.near(body.box)
+                self.solids.add_near(body.box, near)
                 if body.riding is not None:
                     near.add(body.riding)
         return near
