@@ -175,6 +175,9 @@ class PlatformIndex:
     outside: list[Platform] = field(default_factory=list)
     # The block of map every filed route region lies in: a body outside it is near none.
     bounds: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
+    # The same block grown to whole cells: a query whose region misses it visits no cell
+    # this layer files anything in, so it need not look this layer up at all.
+    cell_bounds: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
 
     def file(self, platform: Platform) -> None:
         """Put the platform in the cells of its route region (once, when the level starts)."""
@@ -190,9 +193,16 @@ class PlatformIndex:
                            max(high_y, bottom))
         else:
             self.bounds = (left, top, right, bottom)
-        for row in range(math.floor(top / grid.tile_h), math.ceil(bottom / grid.tile_h)):
-            for col in range(math.floor(left / grid.tile_w), math.ceil(right / grid.tile_w)):
+        first_col, end_col = math.floor(left / grid.tile_w), math.ceil(right / grid.tile_w)
+        first_row, end_row = math.floor(top / grid.tile_h), math.ceil(bottom / grid.tile_h)
+        for row in range(first_row, end_row):
+            for col in range(first_col, end_col):
                 self.cells.setdefault(row * grid.cols + col, []).append(platform)
+        low_x, low_y, high_x, high_y = self.bounds
+        self.cell_bounds = (math.floor(low_x / grid.tile_w) * grid.tile_w,
+                            math.floor(low_y / grid.tile_h) * grid.tile_h,
+                            math.ceil(high_x / grid.tile_w) * grid.tile_w,
+                            math.ceil(high_y / grid.tile_h) * grid.tile_h)
 
     def add_near(self, box: Box, found: set[Platform]) -> None:
         """Add to ``found`` the platforms whose route region shares a cell with the box (and
@@ -256,7 +266,10 @@ class SolidsWithPlatforms:
         """The tile grid's entries in the region, then the platforms' (by number)."""
         index = self.index
         assert index is not None
-        found = self.grid.entries_in(left, top, right, bottom, index.cells, self.ignored)
+        low_x, low_y, high_x, high_y = index.cell_bounds
+        movers = (index.cells if left < high_x and low_x < right and top < high_y
+                  and low_y < bottom else None)  # None: no filed cell is visited
+        found = self.grid.entries_in(left, top, right, bottom, movers, self.ignored)
         if index.outside and right > left and bottom > top:
             tested = [p for p in index.outside if p is not self.ignored]
             found.extend(p.entry for p in tested if _overlaps(p.entry, left, top, right, bottom))
