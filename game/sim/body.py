@@ -63,9 +63,12 @@ class Body(BoxSprite):
         last_x, last_y = self.last_x, self.last_y
         if last_x is None and last_y is None:
             return self.box.overlaps(region)
-        for move in (last_x, last_y):
-            if move is not None:
-                left, top, p_right, p_bottom = move.path_edges  # worked out once per move
-                if left < right and x < p_right and top < bottom and y < p_bottom:
-                    return True
+        if last_x is not None:
+            left, top, p_right, p_bottom = last_x.path_edges  # worked out once per move
+            if left < right and x < p_right and top < bottom and y < p_bottom:
+                return True
+        if last_y is not None:
+            left, top, p_right, p_bottom = last_y.path_edges
+            if left < right and x < p_right and top < bottom and y < p_bottom:
+                return True
         return False

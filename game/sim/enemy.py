@@ -74,8 +74,10 @@ class Enemy(Body):
         front = x + w if self.direction > 0 else x - LEDGE_PROBE_PX
         feet = y + h
         hazard = TileKind.HAZARD
-        return any(entry[4] is not hazard for entry in grid.entries_in(
-            front, feet, front + LEDGE_PROBE_PX, feet + LEDGE_PROBE_PX))
+        for entry in grid.entries_in(front, feet, front + LEDGE_PROBE_PX, feet + LEDGE_PROBE_PX):
+            if entry[4] is not hazard:
+                return True
+        return False
 
     def react(self, x_move: Move, y_move: Move) -> None:
         if x_move.hit is not None:
