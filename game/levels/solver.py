@@ -1,0 +1,340 @@
+"""Prove a level can be won: search the game's own simulation for inputs that reach an Exit.
+
+Where it sits: above the loader. ``python -m game.levels solve MAP`` prints what it finds
+and ``python -m game.levels check`` runs it on every map it checks. It plays the real game:
+the same :meth:`World.step`, the same tuning, the same map properties, so a route it finds
+is a route a player can take, and the input script it writes wins the level when replayed
+with ``python -m game --headless --level MAP --inputs SCRIPT``.
+
+What it teaches: a **beam search** over a deterministic simulation.
+
+* **Moves.** Every :data:`MOVE_TICKS` ticks the player picks one of a few held-input
+  choices (:data:`CHOICES`: run left or right, with or without jump, stand, jump on the
+  spot, and drop through a one-way floor). Holding jump into the next move keeps a jump
+  rising; letting go cuts it, so short and long jumps are both there.
+* **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
+  state, step the world, keep the child's state.
+* **A layer per move.** All children of the current beam are scored by how far they still
+  are from an Exit, and only the best :attr:`Effort.widths` survive. A loss of a life ends
+  a branch. Two states in the same place, at the same speed, with the moving platforms at
+  the same point of their paths, are the same state: only the first is kept, ever, so the
+  beam cannot go round in circles.
+* **The score** is the walking distance to the nearest Exit through open cells (a flood
+  fill from the Exit over the tile grid), plus a penalty for falling with no floor below:
+  standing at the edge of a pit waiting for a platform is better than jumping into it.
+* **Widening.** A narrow beam is fast but can throw away the one state that needed to wait.
+  When a beam dies out, or stops getting closer for a while, the search starts again wider.
+
+Everything is deterministic: the same map and options give the same script. The search is
+bounded by layers, widths and, optionally, wall-clock seconds; when it gives up it reports
+the furthest place it reached (closest to an Exit by the score).
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+import time
+from collections import deque
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from game.collision.aabb import Box
+from game.levels.loader import load_level
+from game.sim.campaign import Campaign, Outcome
+from game.sim.inputs import Action, Actions, InputEvent, Recorder
+from game.sim.level import Level
+from game.sim.snapshot import Snapshot
+from game.sim.tilegrid import TileKind
+from game.sim.world import EventKind, World
+
+MOVE_TICKS = 6  # ticks one choice is held: 0.1 s, finer than a person presses keys
+L, R, J, D = Action.LEFT, Action.RIGHT, Action.JUMP, Action.DOWN
+CHOICES: tuple[Actions, ...] = (
+    frozenset({R}), frozenset({R, J}), frozenset({L}), frozenset({L, J}),
+    frozenset(), frozenset({J}), frozenset({D, J}))
+DROP = CHOICES[-1]  # only tried while standing on a one-way floor
+PIT_PENALTY_TILES = 6.0  # falling with no floor below costs as much as this much distance
+SAME_PLACE_PX = 4.0  # states closer than this (and alike in speed) count as one
+SAME_SPEED_PX_S = 30.0
+PLATFORM_PHASE_PX = 16.0  # moving platforms this close along their paths count as alike
+STALL_MOVES = 60  # a beam that gets no closer for this many moves (plus a platform's
+#                   round trip) is given up for a wider one
+UNREACHABLE = math.inf
+BEST_FIRST_WEIGHT = 3.0  # how much more a tile of distance counts than a tile's worth of time
+
+
+@dataclass(frozen=True)
+class Effort:
+    """How hard to look: the beam widths tried in turn, and the limits on each try."""
+
+    greedy_moves: int = 15_000  # moves the best-first search may try before the beams
+    widths: tuple[int, ...] = (12, 24, 48)
+    max_game_s: float = 300.0  # the longest route looked for, in game time
+    seconds: float | None = None  # wall-clock limit for the whole search (None: none)
+
+
+@dataclass
+class Node:
+    """A state the search reached: the move that led here from its parent."""
+
+    parent: Node | None
+    choice: Actions
+    ticks: int  # ticks since the start
+
+
+@dataclass
+class Solution:
+    """What the search found: a route to an Exit, or how far it got."""
+
+    level: Level
+    found: bool
+    held: list[Actions]  # the input of every tick, from tick 0 to the one that reached the Exit
+    furthest: Box  # the player's hitbox at the place closest to an Exit
+    route: list[Box] = field(default_factory=list)  # the hitbox after every tick
+    moves_tried: int = 0
+    timed_out: bool = False
+
+    @property
+    def exit_tick(self) -> int:
+        return len(self.held)
+
+    def script(self, note: str = "") -> str:
+        """The route as an input script in the game's format."""
+        recorder = Recorder()
+        for tick, held in enumerate(self.held):
+            recorder.observe(tick, held)
+        recorder.observe(len(self.held), frozenset())
+        lines = [f"# {note}" if note else "# found by python -m game.levels solve"]
+        lines += [str(event) for event in _tidy(recorder.events)]
+        lines.append(f"# reaches the exit at tick {self.exit_tick}")
+        return "\n".join(lines) + "\n"
+
+    def furthest_tile(self) -> tuple[int, int]:
+        grid = self.level.grid
+        x, y = self.furthest.center
+        return math.floor(x / grid.tile_w), math.floor(y / grid.tile_h)
+
+
+def _tidy(events: Sequence[InputEvent]) -> list[InputEvent]:
+    """Releases before presses within a tick, so a script reads as a person's keys would."""
+    return sorted(events, key=lambda e: (e.tick, e.pressed, e.action.value))
+
+
+def distances_to_exit(level: Level) -> dict[tuple[int, int], int]:
+    """Steps through open cells (4-neighbours) from every cell to the nearest Exit's cells.
+
+    Cells above the map count as open, since the sky is; cells filled by a whole Solid tile
+    are closed. This ignores gravity: it is a guide for the search, not a route.
+    """
+    grid = level.grid
+    closed = {(s.col, s.row) for s in grid.shapes()
+              if s.kind is TileKind.SOLID and s.box.w >= grid.tile_w and s.box.h >= grid.tile_h}
+    sky_rows = 4
+    steps: dict[tuple[int, int], int] = {}
+    queue: deque[tuple[int, int]] = deque()
+    for goal in level.exits:
+        for col in range(math.floor(goal.left / grid.tile_w),
+                         math.ceil(goal.right / grid.tile_w)):
+            for row in range(math.floor(goal.top / grid.tile_h),
+                             math.ceil(goal.bottom / grid.tile_h)):
+                if (col, row) not in steps:
+                    steps[(col, row)] = 0
+                    queue.append((col, row))
+    while queue:
+        col, row = queue.popleft()
+        for near in ((col + 1, row), (col - 1, row), (col, row + 1), (col, row - 1)):
+            if (0 <= near[0] < grid.cols and -sky_rows <= near[1] < grid.rows
+                    and near not in closed and near not in steps):
+                steps[near] = steps[(col, row)] + 1
+                queue.append(near)
+    return steps
+
+
+class _Search:
+    """One level's search state: the world it steps, the score and what it has seen."""
+
+    def __init__(self, level: Level, effort: Effort) -> None:
+        self.level = level
+        self.effort = effort
+        self.world = World(level)
+        self.steps = distances_to_exit(level)
+        self.start = Snapshot.of(self.world)
+        self.moves_tried = 0
+        periods = [2 * p.spec.path.length / p.spec.speed_px_s for p in self.world.platforms
+                   if p.spec.speed_px_s > 0]
+        round_trip_moves = max(periods, default=0.0) / (MOVE_TICKS * self.world.tuning.tick_s)
+        self.stall_moves = STALL_MOVES + math.ceil(min(round_trip_moves, 100_000))
+        self.deadline = (time.monotonic() + effort.seconds if effort.seconds is not None
+                         else None)
+        self.best: tuple[float, Box, Node | None] = (
+            self.score(), self.world.player.box, None)
+
+    def score(self) -> float:
+        """How far the player still is from an Exit, in tiles (lower is better)."""
+        world, grid = self.world, self.level.grid
+        box = world.player.box
+        x, y = box.center
+        steps = self.steps.get((math.floor(x / grid.tile_w), math.floor(y / grid.tile_h)))
+        if steps is None:
+            return UNREACHABLE
+        if not world.player.on_ground and world.player.vy > 0:
+            below = Box(box.x, box.bottom, box.w, max(1.0, grid.height_px - box.bottom))
+            if not any(s.kind is not TileKind.HAZARD for s in world.solids.shapes_in(below)):
+                return steps + PIT_PENALTY_TILES
+        return float(steps)
+
+    def key(self, choice: Actions) -> tuple[object, ...]:
+        """What makes two states the same for the search (holding jump matters: a new
+        jump needs a fresh press)."""
+        player = self.world.player
+        phases = tuple(
+            math.floor(p.travelled_px / PLATFORM_PHASE_PX)
+            % max(1, math.floor(2 * p.spec.path.length / PLATFORM_PHASE_PX))
+            for p in self.world.platforms)
+        return (round(player.box.x / SAME_PLACE_PX), round(player.box.y / SAME_PLACE_PX),
+                round(player.vx / SAME_SPEED_PX_S), round(player.vy / SAME_SPEED_PX_S),
+                player.on_ground, player.dropping_through, J in choice,
+                phases, len(self.world.enemies))
+
+    def out_of_time(self) -> bool:
+        return self.deadline is not None and time.monotonic() > self.deadline
+
+    def run(self) -> Node | None:
+        found = self.best_first(self.effort.greedy_moves)
+        if found is not None or self.out_of_time():
+            return found
+        for width in self.effort.widths:
+            found = self.beam(width)
+            if found is not None or self.out_of_time():
+                return found
+        return None
+
+    def children(self, snapshot: Snapshot, node: Node | None, ticks: int,
+                 seen: set[tuple[object, ...]]) -> Iterator[tuple[float, Snapshot, Node]]:
+        """Every new state one move from ``snapshot``; stops early at an Exit (its Node
+        comes with an infinitely good score of minus infinity)."""
+        for choice in CHOICES:
+            if self.out_of_time():
+                return
+            snapshot.restore(self.world)
+            if choice is DROP and not self.world.player.on_ground_one_way:
+                continue
+            outcome = self.try_move(choice)
+            child = Node(node, choice, ticks + (outcome if outcome > 0 else MOVE_TICKS))
+            if outcome > 0:
+                yield -math.inf, snapshot, child
+                return
+            key = self.key(choice)
+            if outcome < 0 or key in seen:
+                continue
+            seen.add(key)
+            score = self.score()
+            if score < self.best[0]:
+                self.best = (score, self.world.player.box, child)
+            yield score, Snapshot.of(self.world), child
+
+    def best_first(self, max_moves: int) -> Node | None:
+        """Always carry on from the state closest to an Exit, counting time a little
+        (weighted A*): quick on levels that need no waiting."""
+        grid, tuning = self.level.grid, self.world.tuning
+        tiles_per_tick = tuning.run_speed_px_s * tuning.tick_s / grid.tile_w
+        seen: set[tuple[object, ...]] = set()
+        queue: list[tuple[float, int, Snapshot, Node | None]] = [(0.0, 0, self.start, None)]
+        order = 0
+        while queue and self.moves_tried < max_moves:
+            _, _, snapshot, node = heapq.heappop(queue)
+            ticks = node.ticks if node is not None else 0
+            for score, child_state, child in self.children(snapshot, node, ticks, seen):
+                if score == -math.inf:
+                    return child
+                order += 1
+                priority = score + child.ticks * tiles_per_tick / BEST_FIRST_WEIGHT
+                heapq.heappush(queue, (priority, order, child_state, child))
+            if self.out_of_time():
+                return None
+        return None
+
+    def beam(self, width: int) -> Node | None:
+        """One beam search of ``width``; the Node that reached an Exit, or None."""
+        tick_s = self.world.tuning.tick_s
+        max_moves = math.ceil(self.effort.max_game_s / (MOVE_TICKS * tick_s))
+        beam: list[tuple[Snapshot, Node | None]] = [(self.start, None)]
+        seen: set[tuple[object, ...]] = set()
+        closest, since_closer = UNREACHABLE, 0
+        for move in range(max_moves):
+            children: list[tuple[float, int, Snapshot, Node]] = []
+            for snapshot, node in beam:
+                for score, child_state, child in self.children(
+                        snapshot, node, move * MOVE_TICKS, seen):
+                    if score == -math.inf:
+                        return child
+                    children.append((score, len(children), child_state, child))
+            if self.out_of_time():
+                return None
+            if not children:
+                return None
+            children.sort(key=lambda c: (c[0], c[1]))
+            beam = [(snapshot, node) for _, _, snapshot, node in children[:width]]
+            if children[0][0] < closest:
+                closest, since_closer = children[0][0], 0
+            else:
+                since_closer += 1
+                if since_closer > self.stall_moves:
+                    return None
+        return None
+
+    def try_move(self, choice: Actions) -> int:
+        """Hold ``choice`` for one move: +ticks if an Exit was reached on that tick,
+        -1 if a life was lost, 0 otherwise."""
+        self.moves_tried += 1
+        for tick in range(1, MOVE_TICKS + 1):
+            kinds = {event.kind for event in self.world.step(choice)}
+            if EventKind.EXIT in kinds:
+                return tick
+            if EventKind.HURT in kinds:
+                return -1
+        return 0
+
+
+def _held_per_tick(node: Node | None) -> list[Actions]:
+    """The input of every tick on the way to ``node``."""
+    moves: list[Node] = []
+    while node is not None:
+        moves.append(node)
+        node = node.parent
+    held: list[Actions] = []
+    for move in reversed(moves):
+        held.extend([move.choice] * (move.ticks - len(held)))
+    return held
+
+
+def replay(level_path: Path, held: Sequence[Actions], level: Level | None = None,
+           ) -> tuple[bool, list[Box]]:
+    """Play ``held`` from the spawn as ``python -m game`` does; did it finish the level, and
+    where was the player after each tick?"""
+    campaign = Campaign(level_path, loader=lambda path: level or load_level(path))
+    route: list[Box] = []
+    for actions in held:
+        campaign.tick(actions)
+        if campaign.levels_completed or campaign.outcome is not Outcome.RUNNING:
+            break
+        route.append(campaign.world.player.box)
+    return campaign.levels_completed > 0 and campaign.deaths == 0, route
+
+
+def solve(level: Level, effort: Effort | None = None) -> Solution:
+    """Search ``level`` for a route from the spawn to an Exit."""
+    search = _Search(level, effort or Effort())
+    found = search.run() if level.exits else None
+    held = _held_per_tick(found)
+    if found is not None:
+        won, route = replay(level.path, held, level)
+        if not won:  # the search and a replay disagree: the snapshot missed some state
+            raise AssertionError(f"{level.path}: the route found does not replay")
+        return Solution(level, True, held, route[-1], route, search.moves_tried)
+    furthest_held = _held_per_tick(search.best[2])
+    _, route = replay(level.path, furthest_held, level)
+    return Solution(level, False, furthest_held, search.best[1], route, search.moves_tried,
+                    timed_out=search.out_of_time())
