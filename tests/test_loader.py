@@ -388,7 +388,9 @@ def test_physics_properties_are_checked(tmp_path: Path, value: str, ok: bool) ->
 # --- the checker's command line -----------------------------------------------------------
 
 def checker(*paths: Path) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([sys.executable, "-m", "game.levels", "check", *map(str, paths)],
+    """The checker on ``paths``, without its search for a route (tests/test_solver.py)."""
+    return subprocess.run([sys.executable, "-m", "game.levels", "check", "--no-solve",
+                           *map(str, paths)],
                           capture_output=True, text=True, timeout=60, check=False)
 
 
@@ -406,9 +408,10 @@ def test_the_checker_answers_every_kind_of_bad_path_in_one_sentence(tmp_path: Pa
     damaged.write_text("<map><layer>")
     bad = [garbage, huge, pipe, empty_folder, damaged, tmp_path / "missing.tmx"]
     result = checker(*bad)
-    lines = result.stdout.splitlines()
+    *lines, summary = result.stdout.splitlines()
     assert result.returncode == 1 and "Traceback" not in result.stdout + result.stderr
     assert [line.split(": ")[0] for line in lines] == [str(path) for path in bad]
+    assert summary.startswith(f"checked {len(bad)} map(s): {len(bad)} not playable")
     assert all(" — " in line for line in lines)
 
 
@@ -433,9 +436,10 @@ def test_warnings_do_not_change_the_checkers_exit_status(tmp_path: Path) -> None
     path = write_map(tmp_path, objects=objects)
     result = checker(path)
     assert result.returncode == 0
-    assert result.stdout == (f"{path}: object #3 '': warning: class 'Sign' means nothing to "
-                             "the game — use one of Player, Coin, Enemy, Exit, Checkpoint, "
-                             "Platform, or clear the class for notes\n")
+    assert result.stdout.splitlines()[:-1] == [
+        f"{path}: object #3 '': warning: class 'Sign' means nothing to the game — use one of "
+        "Player, Coin, Enemy, Exit, Checkpoint, Platform, or clear the class for notes"]
+    assert result.stdout.splitlines()[-1].startswith("checked 1 map(s): all playable;")
 
 
 def test_a_folder_stands_for_the_maps_inside_it(tmp_path: Path) -> None:
@@ -444,7 +448,7 @@ def test_a_folder_stands_for_the_maps_inside_it(tmp_path: Path) -> None:
     result = checker(tmp_path)
     assert result.returncode == 1
     assert result.stdout.startswith(f"{tmp_path / 'b.tmx'}: this map has no Player object")
-    assert "checked 2 map(s): 1 not playable" in result.stderr
+    assert "checked 2 map(s): 1 not playable" in result.stdout
 
 
 def test_a_headless_run_needs_no_tile_images_but_the_checker_does(tmp_path: Path) -> None:

@@ -26,6 +26,7 @@ from game.levels.classes import (
 from game.levels.errors import Findings
 from game.levels.header import MapHeader
 from game.levels.objects import MapObject
+from game.levels.spelling import meant
 from game.sim.level import CoinSpec, EnemySpec
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.tilegrid import TileGrid, TileKind
@@ -34,7 +35,9 @@ from game.sim.tuning import Tuning
 DEFAULT_COIN_PX = 8
 MIN_SIZE_PX = 1.0  # a box thinner than a pixel slips between the grid's whole-pixel faces
 BODY_SHAPES = ("rectangle", "point", "ellipse", "tile")  # what a body's box can come from
-CLASS_NAMES = ", ".join(cls.name for cls in OBJECT_CLASSES)
+OBJECT_CLASS_NAMES = tuple(cls.name for cls in OBJECT_CLASSES)
+CLASS_NAMES = ", ".join(OBJECT_CLASS_NAMES)
+MUST_BE_REACHABLE = ("player", "exit", "checkpoint")  # inside a wall or off the map: no play
 
 
 @dataclass(frozen=True)
@@ -102,17 +105,33 @@ def _box(o: MapObject, cls: TiledClass, point_size: tuple[float, float],
 
 
 def _check_inside(o: MapObject, box: Box, header: MapHeader, findings: Findings) -> None:
-    """Everything must fit in the map, and be over it or above it (the sky is open); the
-    Player must start there."""
+    """Everything must fit in the map and overlap it: an object off any side, above it
+    included, is out of reach. A Player, an Exit or a Checkpoint there makes the level
+    unplayable (an error); anything else is only wasted (a warning)."""
     width, height = header.cols * header.tile_w, header.rows * header.tile_h
-    on_map = box.right > 0 and box.left < width and box.top < height
+    on_map = box.right > 0 and box.left < width and box.bottom > 0 and box.top < height
+    side = ("left of" if box.right <= 0 else "right of" if box.left >= width
+            else "above" if box.bottom <= 0 else "below")
     if box.w > width or box.h > height:
         findings.error(o.place, "it is larger than the map", "make it smaller in Tiled")
-    elif not on_map and o.cls == "player":
-        findings.error(o.place, "the Player starts outside the map", "move it onto the map")
+    elif not on_map and o.cls in MUST_BE_REACHABLE:
+        name = CLASSES_BY_NAME[o.cls].name
+        findings.error(o.place, f"the {name} is {side} the map, where the player cannot "
+                       f"{'start' if o.cls == 'player' else 'reach it'}",
+                       "move it onto the map")
     elif not on_map:
-        findings.warn(o.place, "it is outside the map, where nothing can reach it",
+        findings.warn(o.place, f"it is {side} the map, where nothing can reach it",
                       "move it onto the map")
+
+
+def _inside_solid(box: Box, grid: TileGrid, fully: bool) -> bool:
+    """Does ``box`` overlap a Solid tile's shape (``fully``: is all of it covered)?"""
+    solids = [s.box for s in grid.shapes_in(box) if s.kind is TileKind.SOLID]
+    if not fully:
+        return bool(solids)
+    covered = sum(max(0.0, min(box.right, s.right) - max(box.left, s.left))
+                  * max(0.0, min(box.bottom, s.bottom) - max(box.top, s.top)) for s in solids)
+    return covered >= box.w * box.h
 
 
 def _rests_on_ground(box: Box, grid: TileGrid) -> bool:
@@ -129,7 +148,11 @@ def _warn_unknown(objects: list[MapObject], findings: Findings) -> None:
     """One warning per class the game does not know, naming its first object."""
     by_class: dict[str, list[MapObject]] = defaultdict(list)
     for o in objects:
-        if o.cls and o.cls not in CLASSES_BY_NAME:
+        slip = meant(o.class_name, OBJECT_CLASS_NAMES) if o.cls not in CLASSES_BY_NAME else None
+        if slip is not None:
+            findings.error(o.place, f"class '{o.class_name}' is not a class the game knows; "
+                           f"it looks like '{slip}' misspelt", f"set its Class to {slip}")
+        elif o.cls and o.cls not in CLASSES_BY_NAME:
             by_class[o.class_name].append(o)
         elif o.cls in TILE_KINDS:
             findings.warn(o.place, f"a {TILE_KINDS[o.cls].value} tile placed as an object "
@@ -179,16 +202,22 @@ def build_entities(objects: list[MapObject], header: MapHeader, grid: TileGrid,
             if len(spawns) == 2:
                 findings.error(o.place, "a second Player object",
                                "keep exactly one object with Class 'Player'")
-            if any(s.kind is TileKind.SOLID for s in grid.shapes_in(box)):
-                findings.warn(o.place, "the Player starts inside a Solid tile",
-                              "move the Player into open space")
+            if _inside_solid(box, grid, fully=False):
+                findings.error(o.place, "the Player starts inside a Solid tile",
+                               "move the Player into open space"
+                               + (" (a point is the top-left corner of its hitbox)"
+                                  if o.is_point else ""))
         elif o.cls == "coin":
             coins.append(CoinSpec(box, int(values["value"])))
         elif o.cls == "enemy":
             enemies.append(EnemySpec(box, float(values["speed"]), str(values["kind"])))
         else:
             (checkpoints if o.cls == "checkpoint" else exits).append(box)
-            if not _rests_on_ground(box, grid):
+            if _inside_solid(box, grid, fully=True):
+                findings.error(o.place, f"the {cls.name} is inside Solid tiles, where the "
+                               "player cannot touch it", f"move the {cls.name} into open "
+                               "space, its bottom edge on the ground")
+            elif not _rests_on_ground(box, grid):
                 findings.warn(o.place, f"the {cls.name} floats: no Solid or OneWay tile is "
                               "right under it", f"move the {cls.name} down until its bottom "
                               "edge rests on the ground")

@@ -20,10 +20,18 @@ What it teaches: a **beam search** over a deterministic simulation.
   the same point of their paths, are the same state: only the first is kept, ever, so the
   beam cannot go round in circles.
 * **The score** is the walking distance to the nearest Exit through open cells (a flood
-  fill from the Exit over the tile grid), plus a penalty for falling with no floor below:
-  standing at the edge of a pit waiting for a platform is better than jumping into it.
+  fill from the Exit over the tile grid). The beams add a penalty for falling with no
+  floor below: standing at the edge of a pit waiting for a platform is better than jumping
+  into it.
+* **Best first, then beams.** First a best-first search always carries on from the state
+  with the best score (counting time a little); it is quick where no waiting is needed.
+  If it has not found a route after :attr:`Effort.greedy_moves` moves, beams take over.
 * **Widening.** A narrow beam is fast but can throw away the one state that needed to wait.
   When a beam dies out, or stops getting closer for a while, the search starts again wider.
+
+When solid tiles wall the Exit off from the spawn completely (the flood fill never gets
+from one to the other), no route can exist; the search then only looks, briefly, for the
+place closest to an Exit as the crow flies, to say how far a player gets.
 
 Everything is deterministic: the same map and options give the same script. The search is
 bounded by layers, widths and, optionally, wall-clock seconds; when it gives up it reports
@@ -62,6 +70,7 @@ PLATFORM_PHASE_PX = 16.0  # moving platforms this close along their paths count 
 STALL_MOVES = 60  # a beam that gets no closer for this many moves (plus a platform's
 #                   round trip) is given up for a wider one
 UNREACHABLE = math.inf
+SEALED_MOVES = 3_000  # moves spent finding the closest place to an Exit walled off by tiles
 BEST_FIRST_WEIGHT = 3.0  # how much more a tile of distance counts than a tile's worth of time
 
 
@@ -69,7 +78,7 @@ BEST_FIRST_WEIGHT = 3.0  # how much more a tile of distance counts than a tile's
 class Effort:
     """How hard to look: the beam widths tried in turn, and the limits on each try."""
 
-    greedy_moves: int = 15_000  # moves the best-first search may try before the beams
+    greedy_moves: int = 14_000  # moves the best-first search may try before the beams
     widths: tuple[int, ...] = (12, 24, 48)
     max_game_s: float = 300.0  # the longest route looked for, in game time
     seconds: float | None = None  # wall-clock limit for the whole search (None: none)
@@ -100,13 +109,14 @@ class Solution:
     def exit_tick(self) -> int:
         return len(self.held)
 
-    def script(self, note: str = "") -> str:
+    def script(self) -> str:
         """The route as an input script in the game's format."""
         recorder = Recorder()
         for tick, held in enumerate(self.held):
             recorder.observe(tick, held)
         recorder.observe(len(self.held), frozenset())
-        lines = [f"# {note}" if note else "# found by python -m game.levels solve"]
+        title = self.level.title or self.level.path.stem
+        lines = [f"# Wins '{title}' by reaching its Exit (found by python -m game.levels solve)."]
         lines += [str(event) for event in _tidy(recorder.events)]
         lines.append(f"# reaches the exit at tick {self.exit_tick}")
         return "\n".join(lines) + "\n"
@@ -161,7 +171,12 @@ class _Search:
         self.world = World(level)
         self.steps = distances_to_exit(level)
         self.start = Snapshot.of(self.world)
+        self.goal_cells = [cell for cell, steps in self.steps.items() if steps == 0]
+        x, y = self.world.player.box.center
+        spawn_cell = (math.floor(x / level.grid.tile_w), math.floor(y / level.grid.tile_h))
+        self.sealed = spawn_cell not in self.steps  # solid tiles part spawn and Exit
         self.moves_tried = 0
+        self.pit_penalty = 0.0  # the beams set it: see beam()
         periods = [2 * p.spec.path.length / p.spec.speed_px_s for p in self.world.platforms
                    if p.spec.speed_px_s > 0]
         round_trip_moves = max(periods, default=0.0) / (MOVE_TICKS * self.world.tuning.tick_s)
@@ -169,20 +184,23 @@ class _Search:
         self.deadline = (time.monotonic() + effort.seconds if effort.seconds is not None
                          else None)
         self.best: tuple[float, Box, Node | None] = (
-            self.score(), self.world.player.box, None)
+            self.score() if self.goal_cells else UNREACHABLE, self.world.player.box, None)
 
     def score(self) -> float:
         """How far the player still is from an Exit, in tiles (lower is better)."""
         world, grid = self.world, self.level.grid
         box = world.player.box
         x, y = box.center
-        steps = self.steps.get((math.floor(x / grid.tile_w), math.floor(y / grid.tile_h)))
+        cell = (math.floor(x / grid.tile_w), math.floor(y / grid.tile_h))
+        if self.sealed:  # no open way at all: only the distance as the crow flies is left
+            return min((math.dist(cell, goal) for goal in self.goal_cells), default=UNREACHABLE)
+        steps = self.steps.get(cell)
         if steps is None:
             return UNREACHABLE
-        if not world.player.on_ground and world.player.vy > 0:
+        if self.pit_penalty and not world.player.on_ground and world.player.vy > 0:
             below = Box(box.x, box.bottom, box.w, max(1.0, grid.height_px - box.bottom))
             if not any(s.kind is not TileKind.HAZARD for s in world.solids.shapes_in(below)):
-                return steps + PIT_PENALTY_TILES
+                return steps + self.pit_penalty
         return float(steps)
 
     def key(self, choice: Actions) -> tuple[object, ...]:
@@ -202,6 +220,9 @@ class _Search:
         return self.deadline is not None and time.monotonic() > self.deadline
 
     def run(self) -> Node | None:
+        if self.sealed:  # no route can exist: just find how close one can get
+            self.best_first(min(self.effort.greedy_moves, SEALED_MOVES))
+            return None
         found = self.best_first(self.effort.greedy_moves)
         if found is not None or self.out_of_time():
             return found
@@ -260,6 +281,7 @@ class _Search:
         """One beam search of ``width``; the Node that reached an Exit, or None."""
         tick_s = self.world.tuning.tick_s
         max_moves = math.ceil(self.effort.max_game_s / (MOVE_TICKS * tick_s))
+        self.pit_penalty = PIT_PENALTY_TILES  # a narrow beam must not fill up with falls
         beam: list[tuple[Snapshot, Node | None]] = [(self.start, None)]
         seen: set[tuple[object, ...]] = set()
         closest, since_closer = UNREACHABLE, 0

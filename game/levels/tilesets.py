@@ -30,12 +30,13 @@ from pathlib import Path
 
 from game.collision.aabb import Box
 from game.levels.attributes import number, whole
-from game.levels.classes import CLASSES_BY_NAME
+from game.levels.classes import CLASSES, CLASSES_BY_NAME
 from game.levels.errors import Findings, excerpt
 from game.levels.header import MAX_TILE_PX
 from game.levels.images import MAX_IMAGE_PX, charge_pixels, check_image
 from game.levels.paths import Sandbox, resolve
-from game.levels.properties import class_of
+from game.levels.properties import class_name, class_of
+from game.levels.spelling import meant
 from game.levels.tiledata import ROTATED_120
 from game.levels.tiledxml import read_tiled_xml, refuse_json
 
@@ -44,6 +45,8 @@ MAX_FIRSTGID = ROTATED_120 - 1  # GIDs share their 32 bits with the flip flags
 MAX_TILES = 1 << 18  # in one tileset: a 8192x8192 image of 16x16 tiles
 MAX_MAP_TILES = 1 << 19  # in all the tilesets of one map together
 MAX_TILESETS = 1_000  # real maps use a handful; thousands would only slow loading down
+
+TILE_CLASSES = tuple(cls.name for cls in CLASSES if cls.use_as == "tile")
 
 
 @dataclass(frozen=True)
@@ -202,16 +205,27 @@ def _tileset(node: ET.Element, firstgid: int, base: Path, path: Path | None, whe
     spacing, margin, columns, tilecount = _grid(node, tile_w, tile_h, image_size, findings,
                                                 where)
     tiles: dict[int, TileInfo] = {}
+    unknown: dict[str, list[int]] = {}  # class as written: the tiles that have it
     for tile in node.findall("tile"):
         tile_id = whole(tile.attrib, "id", findings, where, high=MAX_TILES - 1)
         info = _tile_info(tile, base, root, findings, f"{where} tile {tile_id}", check_images)
         if info != TileInfo():
             tiles[tile_id] = info
-    unknown = sorted({t.cls for t in tiles.values() if t.cls and t.cls not in CLASSES_BY_NAME})
-    if unknown:
-        names = ", ".join(f"'{name}'" for name in unknown)
-        findings.warn(where, f"tile class{'es' * (len(unknown) > 1)} {names} mean"
-                      f"{'s' * (len(unknown) == 1)} nothing to the game",
+        written = class_name(tile.attrib)
+        if info.cls and info.cls not in CLASSES_BY_NAME:
+            slip = meant(written, TILE_CLASSES)
+            if slip is not None:
+                findings.error(f"{where} tile {tile_id}", f"class '{written}' is not a class "
+                               f"the game knows; it looks like '{slip}' misspelt, and as it "
+                               "is these tiles collide with nothing",
+                               f"set the tile's Class to {slip} in the tileset editor")
+            else:
+                unknown.setdefault(written, []).append(tile_id)
+    for written, ids in unknown.items():
+        numbers = ", ".join(map(str, ids[:5])) + (", ..." if len(ids) > 5 else "")
+        findings.warn(f"{where} tile{'s' * (len(ids) > 1)} {numbers}",
+                      f"class '{written}' means nothing to the game, so "
+                      f"{'these tiles do' if len(ids) > 1 else 'the tile does'} not collide",
                       "use Solid, OneWay or Hazard, or clear the class")
     span = max(tilecount, max(tiles, default=-1) + 1)
     return Tileset(node.get("name", ""), where, firstgid, span, tile_w, tile_h, columns,

@@ -4,8 +4,8 @@ Where it sits: beside :class:`game.sim.world.World`, for code that tries futures
 the good ones (the level solver of :mod:`game.levels.solver`). Play never needs it.
 
 What it teaches: the state of a simulation is its *mutable attributes*, nothing more. A
-snapshot copies, for the world and every object that changes during a tick (the player,
-the enemies, the platforms, the camera, the contact tracker), the values of its attributes,
+snapshot copies, for the world and every object that may change during a tick (every
+sprite in its groups, every enemy, the camera, the contact tracker), the values of its attributes,
 and for every sprite group, which sprites are in it. It copies no pictures (``Surface``\\s)
 and no level data (the tile grid, the tuning): those never change in a tick and are shared.
 Restoring writes the values back in place, so everything holding a reference to the world
@@ -55,9 +55,23 @@ def _attributes(thing: object) -> dict[str, Any]:
 
 
 def _changing_things(world: World) -> list[object]:
-    """The world and every object of it whose attributes change while it plays."""
-    return [world, world.camera, world.contacts, world.solids, world.player,
-            *world.enemy_by_number.values(), *world.platforms]
+    """The world and every object of it whose attributes may change while it plays: its
+    camera, contact tracker and solids, every enemy (alive or not) and every sprite in any
+    of its groups."""
+    things: dict[int, object] = {}
+    for thing in (world, world.camera, world.contacts, world.solids,
+                  *world.enemy_by_number.values(), *_groups(world)):
+        things.setdefault(id(thing), thing)
+    for group in _groups(world):
+        for sprite in group.sprites():
+            things.setdefault(id(sprite), sprite)
+    return [thing for thing in things.values()
+            if not isinstance(thing, pygame.sprite.AbstractGroup)]
+
+
+def _groups(world: World) -> list[pygame.sprite.AbstractGroup[Any]]:
+    return [value for value in vars(world).values()
+            if isinstance(value, pygame.sprite.AbstractGroup)]
 
 
 @dataclass(frozen=True)
@@ -70,8 +84,7 @@ class Snapshot:
 
     @classmethod
     def of(cls, world: World) -> Snapshot:
-        groups = [value for value in vars(world).values()
-                  if isinstance(value, pygame.sprite.AbstractGroup)]
+        groups = _groups(world)
         return cls(tuple((thing, _attributes(thing)) for thing in _changing_things(world)),
                    tuple((group, tuple(group.sprites())) for group in groups))
 

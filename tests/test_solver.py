@@ -1,0 +1,163 @@
+"""The solver: snapshots restore a world exactly, every shipped level is solved (and its
+winning script is the one the solver writes), and a walled-in Exit is refused by check."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from game.levels import LEVELS_DIR, load_level
+from game.levels.reach import measure_reach
+from game.levels.solver import Effort, replay, solve
+from game.sim.inputs import Action, InputScript
+from game.sim.snapshot import Snapshot
+from game.sim.tuning import Tuning
+from game.sim.world import World
+
+ROOT = Path(__file__).resolve().parent.parent
+SCRIPTS = Path(__file__).resolve().parent / "scripts"
+SHIPPED = sorted(LEVELS_DIR.glob("*.tmx"))
+FIRST = LEVELS_DIR / "01-first-steps.tmx"
+SOLID_GID = 1  # the first tile of assets/tiles.tsx is Solid
+
+
+def state(world: World) -> tuple[object, ...]:
+    """Everything about a world that play shows: bodies, platforms, coins, contacts."""
+    return (world.player.box, world.player.vx, world.player.vy, world.player.on_ground,
+            tuple(enemy.box for enemy in world.enemies), len(world.enemies),
+            tuple(platform.box for platform in world.platforms), len(world.coins),
+            world.contacts.touching, world.spawn, len(world.squashed))
+
+
+@pytest.mark.parametrize("name", ["03-hop-along", "04-moving-parts"])
+def test_a_restored_snapshot_replays_exactly_as_the_first_time(name: str) -> None:
+    level = load_level(LEVELS_DIR / f"{name}.tmx")
+    world = World(level)
+    script = InputScript.load(SCRIPTS / f"{name}.txt")
+    for tick in range(300):
+        world.step(script.held_at(tick))
+    saved = Snapshot.of(world)
+    first = []
+    for tick in range(300, 900):
+        world.step(script.held_at(tick))
+        first.append(state(world))
+    saved.restore(world)
+    script = InputScript.load(SCRIPTS / f"{name}.txt")
+    script.held_at(299)
+    again = []
+    for tick in range(300, 900):
+        world.step(script.held_at(tick))
+        again.append(state(world))
+    assert again == first
+    assert len({s[0] for s in first}) > 100  # the player really moved in between
+
+
+def test_stepping_on_after_a_snapshot_does_not_change_it() -> None:
+    world = World(load_level(FIRST))
+    saved = Snapshot.of(world)
+    before = state(world)
+    for _ in range(120):
+        world.step(frozenset({Action.RIGHT, Action.JUMP}))
+    assert state(world) != before
+    saved.restore(world)
+    assert state(world) == before
+
+
+@pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
+def test_the_solver_finds_the_committed_winning_script(level: Path) -> None:
+    loaded = load_level(level)
+    solution = solve(loaded)
+    assert solution.found
+    committed = (SCRIPTS / f"{level.stem}.txt").read_text(encoding="utf-8")
+    assert solution.script() == committed
+    script = InputScript.load(SCRIPTS / f"{level.stem}.txt")
+    won, _ = replay(level, [script.held_at(t) for t in range(solution.exit_tick)])
+    assert won
+
+
+def walled_in_copy(folder: Path) -> Path:
+    """The first level with solid tiles all round its Exit."""
+    tree = ET.parse(FIRST)
+    root = tree.getroot()
+    cols = int(root.get("width", "0"))
+    exit_object = next(o for o in root.iter("object") if o.get("type") == "Exit")
+    col = int(float(exit_object.get("x", "0"))) // 16
+    row = int(float(exit_object.get("y", "0"))) // 16
+    ground = next(layer for layer in root.iter("layer") if layer.get("name") == "ground")
+    data = ground.find("data")
+    assert data is not None and data.text is not None
+    gids = [int(g) for g in data.text.replace("\n", "").split(",")]
+    for c in range(col - 1, min(col + 2, cols)):
+        for r in range(0, row + 3):
+            if c in (col - 1, col + 1) or r < row:
+                gids[r * cols + c] = SOLID_GID
+    rows = [gids[r * cols:(r + 1) * cols] for r in range(len(gids) // cols)]
+    data.text = "\n" + ",\n".join(",".join(map(str, r)) for r in rows) + "\n"
+    for tileset in root.iter("tileset"):
+        tileset.set("source", str((FIRST.parent / tileset.get("source", "")).resolve()))
+    path = folder / "walled-in.tmx"
+    tree.write(path, encoding="UTF-8", xml_declaration=True)
+    return path
+
+
+def test_check_refuses_a_level_whose_exit_is_walled_in_naming_the_furthest_place(
+        tmp_path: Path) -> None:
+    level = walled_in_copy(tmp_path)
+    result = subprocess.run([sys.executable, "-m", "game.levels", "check", str(level)],
+                            capture_output=True, text=True, timeout=600, check=False, cwd=ROOT)
+    assert result.returncode == 1, result.stdout + result.stderr
+    line = next(line for line in result.stdout.splitlines() if "not reached" in line)
+    assert line.startswith(f"{level}: tile (")
+    assert "the exit was not reached from the spawn" in line and " — " in line
+    col = int(line.split("tile (")[1].split(",")[0])
+    assert 70 <= col < 84  # it got most of the way: the wall is at column 82
+
+
+def test_check_can_skip_the_search(tmp_path: Path) -> None:
+    level = walled_in_copy(tmp_path)
+    result = subprocess.run([sys.executable, "-m", "game.levels", "check", "--no-solve",
+                             str(level)], capture_output=True, text=True, timeout=120,
+                            check=False, cwd=ROOT)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "not reached" not in result.stdout
+
+
+def test_solve_writes_a_script_the_game_replays_to_the_exit_and_a_picture(
+        tmp_path: Path) -> None:
+    script, picture, report = tmp_path / "route.txt", tmp_path / "route.png", tmp_path / "r.json"
+    solved = subprocess.run([sys.executable, "-m", "game.levels", "solve", str(FIRST),
+                             "--out", str(script), "--picture", str(picture)],
+                            capture_output=True, text=True, timeout=600, check=False, cwd=ROOT)
+    assert solved.returncode == 0, solved.stderr
+    assert picture.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    played = subprocess.run([sys.executable, "-m", "game", "--headless", "--level", str(FIRST),
+                             "--inputs", str(script), "--report", str(report)],
+                            capture_output=True, text=True, timeout=600, check=False, cwd=ROOT)
+    assert played.returncode == 0, played.stderr
+    assert '"levels_completed": 1' in report.read_text(encoding="utf-8")
+
+
+def test_solve_says_how_far_it_got_when_the_exit_is_walled_in(tmp_path: Path) -> None:
+    level = walled_in_copy(tmp_path)
+    result = subprocess.run([sys.executable, "-m", "game.levels", "solve", str(level),
+                             "--out", str(tmp_path / "none.txt")],
+                            capture_output=True, text=True, timeout=600, check=False, cwd=ROOT)
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"{level}: tile (") and "furthest place" in result.stderr
+    assert not (tmp_path / "none.txt").exists()
+
+
+def test_a_search_out_of_time_gives_up_and_says_so() -> None:
+    solution = solve(load_level(FIRST), Effort(seconds=0.01))
+    assert not solution.found and solution.timed_out
+
+
+def test_the_reach_is_measured_from_the_tuning() -> None:
+    default = measure_reach(Tuning())
+    assert 2.5 * 16 < default.height_px < 3 * 16          # about 44 px: a plank 3 tiles up is out
+    higher = measure_reach(Tuning(jump_speed_px_s=400.0))
+    assert higher.height_px > default.height_px and higher.distance_px > default.distance_px
