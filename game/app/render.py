@@ -52,11 +52,11 @@ from game.app.assets import Assets
 from game.app.effects import Effects
 from game.sim.camera import Camera
 from game.sim.enemy import Enemy, Squashed
-from game.sim.level import Level, TileLayer
+from game.sim.level import Animation, Level, TileLayer
 from game.sim.pickups import Checkpoint, Coin, Exit
 from game.sim.platforms import Platform
 from game.sim.player import Player
-from game.sim.sprite import BoxSprite, Strip
+from game.sim.sprite import ANIMATION_HZ, BoxSprite, Strip
 from game.sim.world import World
 
 SKY_PARALLAX = 0.25  # the sky moves this fraction of a pixel per pixel the camera moves
@@ -178,19 +178,40 @@ def _overhang_cells(images: Iterable[pygame.Surface], tile_w: int, tile_h: int
     return max(0, math.ceil(max_w / tile_w) - 1), max(0, math.ceil(max_h / tile_h) - 1)
 
 
+def animation_frame(animation: Animation, ms: int) -> int:
+    """The tile id an animation shows ``ms`` milliseconds after it started (it loops).
+
+    >>> [animation_frame(((7, 100), (8, 300)), ms) for ms in (0, 99, 100, 399, 400)]
+    [7, 7, 8, 8, 7]
+    """
+    ms %= sum(duration for _, duration in animation)
+    for gid, duration in animation:
+        if ms < duration:
+            return gid
+        ms -= duration
+    return animation[-1][0]  # pragma: no cover (the loop always returns)
+
+
 class LayerCache:
     """One tile layer, drawn chunk by chunk into surfaces the first time each is seen.
 
     Tiles larger than a cell are anchored at the cell's bottom-left corner, as Tiled draws
-    them, so a chunk also draws the neighbours whose pictures reach into it.
+    them, so a chunk also draws the neighbours whose pictures reach into it. Animated tiles
+    (Tiled's Tile Animation Editor) are left out of the chunks and drawn each frame with the
+    frame their animation has reached. A layer's parallax factor scales how far it scrolls
+    with the camera, as in Tiled (1: with the map; 0: fixed on screen).
     """
 
     def __init__(self, layer: TileLayer, images: Mapping[int, pygame.Surface],
-                 tile_size: tuple[int, int], overhang: tuple[int, int]) -> None:
+                 tile_size: tuple[int, int], overhang: tuple[int, int],
+                 animations: Mapping[int, Animation] | None = None) -> None:
         self.layer = layer
         self.images = images
         self.tile_w, self.tile_h = tile_size
         self.overhang = overhang
+        self.animations = animations or {}
+        self.animated = [(col, row, gid) for row, line in enumerate(layer.gids)
+                         for col, gid in enumerate(line) if gid in self.animations]
         self.chunks: OrderedDict[tuple[int, int], pygame.Surface | None] = OrderedDict()
         self.chunks_drawn = 0  # how many chunks have been drawn from tiles, ever
 
@@ -218,7 +239,7 @@ class LayerCache:
             bottom = (row + 1) * self.tile_h - top
             for col in cols:
                 gid = line[col] if col < len(line) else 0
-                image = self.images.get(gid) if gid else None
+                image = self.images.get(gid) if gid and gid not in self.animations else None
                 if image is not None:
                     blits.append((image, (col * self.tile_w - left,
                                           bottom - image.get_height())))
@@ -231,19 +252,40 @@ class LayerCache:
         self.chunks_drawn += 1
         return surface
 
-    def draw(self, target: pygame.Surface, offset: tuple[int, int]) -> None:
-        """Blit the chunks in view; ``offset`` is :func:`screen_offset` of the camera."""
+    def draw(self, target: pygame.Surface, offset: tuple[int, int], frame: int = 0) -> None:
+        """Blit the chunks in view; ``offset`` is :func:`screen_offset` of the camera and
+        ``frame`` the count that drives animations (:data:`ANIMATION_HZ` a second)."""
         if self.layer.opacity <= 0 or not self.layer.gids:
             return
         layer_x = math.floor(self.layer.offset[0])
         layer_y = math.floor(self.layer.offset[1])
-        view_x, view_y = offset[0] - layer_x, offset[1] - layer_y  # the view, in layer pixels
+        scroll_x = math.floor(offset[0] * self.layer.parallax[0])
+        scroll_y = math.floor(offset[1] * self.layer.parallax[1])
+        view_x, view_y = scroll_x - layer_x, scroll_y - layer_y  # the view, in layer pixels
         view_w, view_h = target.get_size()
         for cy in range(view_y // CHUNK_PX, (view_y + view_h - 1) // CHUNK_PX + 1):
             for cx in range(view_x // CHUNK_PX, (view_x + view_w - 1) // CHUNK_PX + 1):
                 surface = self.chunk(cx, cy)
                 if surface is not None:
                     target.blit(surface, (cx * CHUNK_PX - view_x, cy * CHUNK_PX - view_y))
+        if self.animated:
+            self._draw_animated(target, view_x, view_y, frame * 1000 // ANIMATION_HZ)
+
+    def _draw_animated(self, target: pygame.Surface, view_x: int, view_y: int,
+                       ms: int) -> None:
+        view_w, view_h = target.get_size()
+        for col, row, gid in self.animated:
+            image = self.images.get(animation_frame(self.animations[gid], ms))
+            if image is None:
+                continue
+            x = col * self.tile_w - view_x
+            y = (row + 1) * self.tile_h - image.get_height() - view_y
+            if x < view_w and y < view_h and x + image.get_width() > 0 \
+                    and y + image.get_height() > 0:
+                if self.layer.opacity < 1.0:
+                    image = image.copy()
+                    image.set_alpha(round(self.layer.opacity * OPAQUE))
+                target.blit(image, (x, y))
 
 
 def layer_caches(level: Level, layers: Iterable[TileLayer]) -> list[LayerCache]:
@@ -251,7 +293,8 @@ def layer_caches(level: Level, layers: Iterable[TileLayer]) -> list[LayerCache]:
     grid = level.grid
     images = level.tile_images
     overhang = _overhang_cells(images.values(), grid.tile_w, grid.tile_h)
-    return [LayerCache(layer, images, (grid.tile_w, grid.tile_h), overhang) for layer in layers]
+    return [LayerCache(layer, images, (grid.tile_w, grid.tile_h), overhang, level.animations)
+            for layer in layers]
 
 
 def cast(world: World) -> tuple[tuple[Layer, Iterable[BoxSprite]], ...]:
@@ -295,7 +338,7 @@ class WorldRenderer:
         self._draw_sky(target, world)
         # 2. Tile layers behind the sprites.
         for cache in self.back:
-            cache.draw(target, offset)
+            cache.draw(target, offset, frame)
         # 3. Sprites: new ones get their pictures, each picks its frame, the group draws.
         self._cast_new_sprites(world)
         self.sprites.update(frame)
@@ -306,7 +349,7 @@ class WorldRenderer:
             self.effects.draw(target, offset)
         # 4. Foreground tile layers.
         for cache in self.front:
-            cache.draw(target, offset)
+            cache.draw(target, offset, frame)
         if self.effects is not None:
             self.effects.shake(target)
 

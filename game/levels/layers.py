@@ -28,6 +28,7 @@ from game.levels.errors import Findings
 LEAF_TAGS = ("layer", "objectgroup", "imagelayer")
 MAX_GROUP_DEPTH = 32
 MAX_LAYERS = 1_000
+MAX_PARALLAX = 100.0  # a factor further from 0 than this scrolls a layer off in a blink
 
 
 @dataclass(frozen=True)
@@ -39,6 +40,7 @@ class LayerNode:
     offset: tuple[float, float]
     opacity: float
     visible: bool
+    parallax: tuple[float, float] = (1.0, 1.0)
 
     @property
     def kind(self) -> str:
@@ -50,7 +52,8 @@ class LayerNode:
 
 
 def _walk(parent: ET.Element, findings: Findings, offset: tuple[float, float],
-          opacity: float, visible: bool, depth: int) -> Iterator[LayerNode]:
+          opacity: float, visible: bool, depth: int,
+          parallax: tuple[float, float] = (1.0, 1.0)) -> Iterator[LayerNode]:
     if depth > MAX_GROUP_DEPTH:
         findings.fail("", f"groups are nested more than {MAX_GROUP_DEPTH} deep",
                       "move the layers out of some groups in Tiled's Layers panel")
@@ -64,10 +67,19 @@ def _walk(parent: ET.Element, findings: Findings, offset: tuple[float, float],
         alpha = opacity * min(1.0, max(0.0, number(child.attrib, "opacity", findings, where,
                                                    1.0)))
         shown = visible and child.get("visible", "1") != "0"
+        # Tiled multiplies a layer's parallax factors by its groups'.
+        factors = (parallax[0] * _factor(child, "parallaxx", findings, where),
+                   parallax[1] * _factor(child, "parallaxy", findings, where))
         if child.tag == "group":
-            yield from _walk(child, findings, (ox, oy), alpha, shown, depth + 1)
+            yield from _walk(child, findings, (ox, oy), alpha, shown, depth + 1, factors)
         else:
-            yield LayerNode(child, name, (ox, oy), alpha, shown)
+            yield LayerNode(child, name, (ox, oy), alpha, shown, factors)
+
+
+def _factor(node: ET.Element, name: str, findings: Findings, where: str) -> float:
+    """A parallax factor, kept within what makes sense on screen."""
+    return min(MAX_PARALLAX, max(-MAX_PARALLAX, number(node.attrib, name, findings, where,
+                                                       1.0)))
 
 
 def walk_layers(root: ET.Element, findings: Findings) -> list[LayerNode]:

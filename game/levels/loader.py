@@ -34,11 +34,12 @@ and tile data it points to, then the objects, and only then pytmx, given a clean
 from __future__ import annotations
 
 import contextlib
+import xml.etree.ElementTree as ET
 from collections.abc import Sequence
 from pathlib import Path
 
 from game.levels import pytmx_bridge
-from game.levels.classes import LEVEL
+from game.levels.classes import LEVEL, TILE_KINDS
 from game.levels.entities import build_entities
 from game.levels.errors import Findings, LevelError, excerpt
 from game.levels.header import MAX_TOTAL_CELLS, MapHeader, read_header
@@ -49,14 +50,15 @@ from game.levels.paths import Sandbox, real, resolve, sandbox_for
 from game.levels.properties import Value, read_properties
 from game.levels.solids import build_grid
 from game.levels.templates import Templates
-from game.levels.tiledata import TileDataError, decode
+from game.levels.tiledata import TileDataError, decode, split
 from game.levels.tiledxml import is_json_name, read_tiled_xml
-from game.levels.tilesets import read_tilesets
+from game.levels.tilesets import Tilesets, read_tilesets
 from game.sim.level import Level, TileLayer
 from game.sim.tuning import Tuning
 
 DecodedLayer = tuple[LayerNode, list[int]]
 MAX_TITLE_CHARS = 60  # what fits on the screen in the level's banner, and then some
+LEVEL_PROPERTY_NAMES = frozenset(member.name for member in LEVEL.members)
 
 
 def _decode_layers(layers: Sequence[LayerNode], header: MapHeader,
@@ -139,6 +141,53 @@ def _check_image_layers(layers: Sequence[LayerNode], path: Path, root: Sandbox,
                       "paint the picture as tiles on a tile layer, or delete the layer")
 
 
+def _collides(gids: Sequence[int], tilesets: Tilesets) -> bool:
+    """Does any tile of the layer have a class that collides (Solid, OneWay, Hazard)?"""
+    for gid in set(gids):
+        if gid:
+            tile = tilesets.tile(split(gid)[0])
+            if tile is not None and tile.cls in TILE_KINDS:
+                return True
+    return False
+
+
+def _warn_moved_colliding_layers(decoded: Sequence[DecodedLayer], tilesets: Tilesets,
+                                 findings: Findings) -> None:
+    """A layer that collides is drawn where it collides: its offset and parallax are not
+    used, since the collision grid cannot move with them."""
+    for layer, gids in decoded:
+        if not _collides(gids, tilesets):
+            continue
+        if layer.offset != (0.0, 0.0):
+            findings.warn(layer.place, f"its offset ({layer.offset[0]:g}, {layer.offset[1]:g}) "
+                          "would move the drawing but not the collision, so the game draws "
+                          "this colliding layer without it",
+                          "set the layer's Offset to 0, 0 and move the tiles instead")
+        if layer.parallax != (1.0, 1.0):
+            findings.warn(layer.place, f"its parallax factor ({layer.parallax[0]:g}, "
+                          f"{layer.parallax[1]:g}) would move the drawing but not the "
+                          "collision, so the game scrolls this colliding layer at 1, 1",
+                          "set Parallax Factor to 1, 1, or move the decoration to a layer "
+                          "with no Solid, OneWay or Hazard tiles")
+
+
+def _warn_layer_properties(root: ET.Element, findings: Findings) -> None:
+    """The game reads properties of the map and of objects only; on a layer or a group
+    they do nothing, and a physics property there was surely meant for the map."""
+    for node in root.iter():
+        if node.tag not in ("layer", "objectgroup", "imagelayer", "group"):
+            continue
+        place = f"layer '{node.get('name', '')}'"
+        for name in read_properties(node, findings, place):
+            if name in LEVEL_PROPERTY_NAMES:
+                findings.warn(place, f"property '{name}' on a layer does nothing; the game "
+                              "reads it only from the map",
+                              f"move '{name}' to Map > Map Properties")
+            else:
+                findings.warn(place, f"property '{name}' on a layer means nothing to the game",
+                              "delete it, or keep it as a note")
+
+
 def _split_by_objects(layers: Sequence[LayerNode], drawn: Sequence[TileLayer]
                       ) -> tuple[list[TileLayer], list[TileLayer]]:
     """Visible tile layers drawn behind the sprites, and those above the first object layer
@@ -172,6 +221,8 @@ def _read(path: Path, findings: Findings, images: bool, check_images: bool,
     decoded = _decode_layers(layers, header, findings)
     grid = build_grid(header, decoded, tilesets, findings)
     _check_image_layers(layers, path, sandbox, findings, check_images)
+    _warn_moved_colliding_layers(decoded, tilesets, findings)
+    _warn_layer_properties(root, findings)
 
     # 3. Objects and properties: the spawn, coins, enemies, exits and physics.
     templates = Templates(path, sandbox, tilesets, findings, check_images)
@@ -184,8 +235,10 @@ def _read(path: Path, findings: Findings, images: bool, check_images: bool,
     # 4. Only now pytmx, on a clean copy: tile ids for drawing, and the tile images.
     tmx = pytmx_bridge.parse(path, pytmx_bridge.clean_map(header, tilesets, decoded),
                              images, findings)
-    behind, in_front = _split_by_objects(
-        layers, pytmx_bridge.drawn_layers(tmx, [layer for layer, _gids in decoded]))
+    colliding = [_collides(gids, tilesets) for _layer, gids in decoded]
+    behind, in_front = _split_by_objects(layers, pytmx_bridge.drawn_layers(
+        tmx, [layer for layer, _gids in decoded], colliding))
+    animations = pytmx_bridge.animations(tmx, [*behind, *in_front])
     next_level = properties.get("next_level")
     return Level(
         path=path, grid=grid, spawn=entities.spawn, coins=entities.coins,
@@ -194,8 +247,9 @@ def _read(path: Path, findings: Findings, images: bool, check_images: bool,
         title=str(properties.get("title") or path.stem),
         next_level=path.parent / str(next_level) if next_level else None,
         properties=properties, layers=tuple(behind), foreground=tuple(in_front),
-        tile_images=pytmx_bridge.tile_images(tmx, [*behind, *in_front]) if images else {},
-        background_color=header.background)
+        tile_images=pytmx_bridge.tile_images(tmx, [*behind, *in_front], animations)
+        if images else {},
+        animations=animations, background_color=header.background)
 
 
 def load_level(path: Path | str, *, images: bool = False, tuning: Tuning | None = None,

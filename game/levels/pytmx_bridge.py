@@ -24,7 +24,7 @@ height="1"><data encoding="csv">1,2147483649</data></layer></map>'
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -34,7 +34,7 @@ from game.levels.errors import Findings
 from game.levels.header import MapHeader
 from game.levels.layers import LayerNode
 from game.levels.tilesets import Tileset, Tilesets
-from game.sim.level import TileLayer
+from game.sim.level import Animation, TileLayer
 
 FIX_IMAGES = "re-save the tileset image as PNG and pick it again in Tiled"
 
@@ -52,10 +52,18 @@ def _tileset_element(tileset: Tileset) -> ET.Element:
             image["trans"] = tileset.trans
         ET.SubElement(node, "image", image)
     for tile_id, tile in sorted(tileset.tiles.items()):
+        if tile.image is None and not tile.animation:
+            continue
+        tile_node = ET.SubElement(node, "tile", {"id": str(tile_id)})
         if tile.image is not None:
-            ET.SubElement(ET.SubElement(node, "tile", {"id": str(tile_id)}), "image", {
+            ET.SubElement(tile_node, "image", {
                 "source": str(tile.image), "width": str(tile.image_size[0]),
                 "height": str(tile.image_size[1])})
+        if tile.animation:
+            frames = ET.SubElement(tile_node, "animation")
+            for frame_id, duration_ms in tile.animation:
+                ET.SubElement(frames, "frame", {"tileid": str(frame_id),
+                                                "duration": str(duration_ms)})
     return node
 
 
@@ -94,16 +102,35 @@ def parse(path: Path, document: ET.Element, images: bool, findings: Findings) ->
     return tmx
 
 
-def drawn_layers(tmx: Any, layers: Sequence[LayerNode]) -> list[TileLayer]:
-    """The tile layers to draw, with pytmx's ids (the keys of the level's tile images)."""
+def drawn_layers(tmx: Any, layers: Sequence[LayerNode], colliding: Sequence[bool],
+                 ) -> list[TileLayer]:
+    """The tile layers to draw, with pytmx's ids (the keys of the level's tile images).
+    A layer that collides is drawn where it collides: with no offset and no parallax."""
     return [TileLayer(layer.name, tuple(tuple(row) for row in parsed.data), layer.opacity,
-                      layer.offset)
-            for layer, parsed in zip(layers, tmx.layers, strict=True)]
+                      (0.0, 0.0) if collides else layer.offset,
+                      (1.0, 1.0) if collides else layer.parallax)
+            for layer, parsed, collides in zip(layers, tmx.layers, colliding, strict=True)]
 
 
-def tile_images(tmx: Any, layers: Sequence[TileLayer]) -> dict[int, pygame.Surface]:
-    """The image of every tile id the layers use."""
+def animations(tmx: Any, layers: Sequence[TileLayer]) -> dict[int, Animation]:
+    """The animation of every animated tile id the layers use: (frame id, ms) per frame,
+    in pytmx's ids, like the layers'."""
     used = {gid for layer in layers for row in layer.gids for gid in row if gid}
+    found: dict[int, Animation] = {}
+    for gid in sorted(used):
+        properties = tmx.get_tile_properties_by_gid(gid) or {}
+        frames = tuple((int(frame.gid), int(frame.duration))
+                       for frame in properties.get("frames", ()))
+        if frames:
+            found[gid] = frames
+    return found
+
+
+def tile_images(tmx: Any, layers: Sequence[TileLayer],
+                frames: Mapping[int, Animation] | None = None) -> dict[int, pygame.Surface]:
+    """The image of every tile id the layers use, and of every frame of their animations."""
+    used = {gid for layer in layers for row in layer.gids for gid in row if gid}
+    used |= {frame for animation in (frames or {}).values() for frame, _ in animation}
     images: dict[int, pygame.Surface] = {}
     for gid in used:
         image = tmx.images[gid] if gid < len(tmx.images) else None

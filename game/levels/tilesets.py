@@ -46,6 +46,8 @@ MAX_TILES = 1 << 18  # in one tileset: a 8192x8192 image of 16x16 tiles
 MAX_MAP_TILES = 1 << 19  # in all the tilesets of one map together
 MAX_TILESETS = 1_000  # real maps use a handful; thousands would only slow loading down
 
+MAX_ANIMATION_FRAMES = 1_000
+MAX_FRAME_MS = 3_600_000  # an hour: a longer frame is a typo
 TILE_CLASSES = tuple(cls.name for cls in CLASSES if cls.use_as == "tile")
 
 
@@ -57,6 +59,7 @@ class TileInfo:
     boxes: tuple[Box, ...] = ()  # in the tile's pixels; empty: the whole cell
     image: Path | None = None  # image-collection tilesets: the tile's own picture
     image_size: tuple[int, int] = (0, 0)
+    animation: tuple[tuple[int, int], ...] = ()  # (tile id, duration in ms) per frame
 
 
 @dataclass(frozen=True)
@@ -144,7 +147,19 @@ def _tile_info(tile: ET.Element, base: Path, root: Sandbox, findings: Findings, 
                 whole(image_node.attrib, "height", findings, where, 0, high=MAX_IMAGE_PX))
         if check_images:
             size = check_image(image, findings, where, "tile image")
-    return TileInfo(class_of(tile.attrib), _collision_boxes(tile, findings, where), image, size)
+    return TileInfo(class_of(tile.attrib), _collision_boxes(tile, findings, where), image, size,
+                    _animation(tile, findings, where))
+
+
+def _animation(tile: ET.Element, findings: Findings, where: str) -> tuple[tuple[int, int], ...]:
+    """The frames of a tile's animation (Tiled's Tile Animation Editor), checked."""
+    node = tile.find("animation")
+    if node is None:
+        return ()
+    frames = node.findall("frame")[:MAX_ANIMATION_FRAMES]
+    return tuple((whole(frame.attrib, "tileid", findings, where, high=MAX_TILES - 1),
+                  whole(frame.attrib, "duration", findings, where, low=1,
+                        high=MAX_FRAME_MS)) for frame in frames)
 
 
 def _image(node: ET.Element, base: Path, root: Sandbox, findings: Findings, where: str,
@@ -228,6 +243,12 @@ def _tileset(node: ET.Element, firstgid: int, base: Path, path: Path | None, whe
                       f"{'these tiles do' if len(ids) > 1 else 'the tile does'} not collide",
                       "use Solid, OneWay or Hazard, or clear the class")
     span = max(tilecount, max(tiles, default=-1) + 1)
+    for tile_id, info in tiles.items():
+        missing = [frame for frame, _ in info.animation if frame >= span]
+        if missing:
+            findings.error(f"{where} tile {tile_id}", f"its animation shows tile {missing[0]}, "
+                           f"which the tileset does not have (it has {span})",
+                           "pick the frames again in Tiled's Tile Animation Editor")
     return Tileset(node.get("name", ""), where, firstgid, span, tile_w, tile_h, columns,
                    tilecount, spacing, margin, image, image_size, trans, tiles, path)
 

@@ -31,6 +31,9 @@ class EnemySpec:
     kind: str = "walker"             # "walker" patrols; "hopper" patrols in hops
 
 
+Animation = tuple[tuple[int, int], ...]  # a tile's frames: (gid shown, duration in ms)
+
+
 @dataclass(frozen=True)
 class TileLayer:
     """A tile layer to draw, in Tiled's document order: ``gids[row][col]`` (0 = empty)."""
@@ -39,6 +42,7 @@ class TileLayer:
     gids: tuple[tuple[int, ...], ...]
     opacity: float = 1.0
     offset: tuple[float, float] = (0.0, 0.0)
+    parallax: tuple[float, float] = (1.0, 1.0)  # how fast it scrolls with the camera (x, y)
 
 
 @dataclass(frozen=True)
@@ -59,4 +63,5 @@ class Level:
     layers: tuple[TileLayer, ...] = ()  # drawn behind the sprites
     foreground: tuple[TileLayer, ...] = ()  # drawn over them (after the objects in Tiled)
     tile_images: Mapping[int, pygame.Surface] = field(default_factory=dict)  # drawn by gid
+    animations: Mapping[int, Animation] = field(default_factory=dict)  # animated gids
     background_color: str | None = None
