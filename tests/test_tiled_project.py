@@ -19,6 +19,7 @@ from game.levels.classes import CLASSES, find
 from game.levels.project import (
     OBJECT_TYPES_FILE,
     PROJECT_FILE,
+    PROJECT_FILE_1_8,
     PROPERTY_TYPES_FILE,
     generated_files,
 )
@@ -39,12 +40,13 @@ def test_the_types_command_reports_up_to_date_files() -> None:
     assert result.returncode == 0 and result.stdout == ""
 
 
-def test_the_project_has_tiled_1_8s_keys_and_every_class() -> None:
+def test_the_project_has_every_class_and_no_object_types_for_tiled_1_9_to_import() -> None:
     project = json.loads(PROJECT_FILE.read_text(encoding="utf-8"))
     assert {"automappingRulesFile", "commands", "extensionsPath", "folders",
             "objectTypesFile", "propertyTypes"} <= set(project)
     assert "." in project["folders"]
-    assert (PROJECT_FILE.parent / project["objectTypesFile"]) == OBJECT_TYPES_FILE
+    assert project["objectTypesFile"] == ""  # else Tiled 1.9+ imports it over the classes
+    assert project["compatibilityVersion"] == 1080  # classes written as type=, kept by 1.8
     classes = {t["name"]: t for t in project["propertyTypes"] if t["type"] == "class"}
     assert set(classes) == {cls.name for cls in CLASSES}
     assert classes["Coin"]["useAs"] == ["object"] and classes["Solid"]["useAs"] == ["tile"]
@@ -57,10 +59,37 @@ def test_the_project_has_tiled_1_8s_keys_and_every_class() -> None:
     assert len(ids) == len(set(ids))
 
 
-def test_the_commands_play_and_check_the_open_map() -> None:
-    commands = json.loads(PROJECT_FILE.read_text(encoding="utf-8"))["commands"]
+def test_the_tiled_1_8_project_reads_the_object_types_and_keeps_the_enums() -> None:
+    project = json.loads(PROJECT_FILE_1_8.read_text(encoding="utf-8"))
+    assert (PROJECT_FILE_1_8.parent / project["objectTypesFile"]) == OBJECT_TYPES_FILE
+    assert [t["name"] for t in project["propertyTypes"]] == ["EnemyKind"]
+    assert "compatibilityVersion" not in project
+
+
+@pytest.mark.parametrize("path", [PROJECT_FILE, PROJECT_FILE_1_8], ids=["1.9+", "1.8"])
+def test_the_commands_play_and_check_the_open_map_from_any_folder(path: Path) -> None:
+    commands = json.loads(path.read_text(encoding="utf-8"))["commands"]
     assert [c["arguments"] for c in commands] == ["-m game --level %mapfile --watch",
                                                   "-m game.levels check %mapfile"]
+    # No path of one machine's: Python from the PATH (python.exe on Windows too); Tiled puts
+    # %mapfile in quotes, and the working folder is not split into words.
+    assert all(c["command"] == "python" for c in commands)
+    assert all(c["workingDirectory"] == "%projectpath/.." for c in commands)
+
+
+def test_the_check_command_works_from_a_folder_with_spaces(tmp_path: Path) -> None:
+    folder = tmp_path / "my levels folder"
+    shutil.copytree(LEVELS_DIR, folder / "levels")
+    shutil.copytree(LEVELS_DIR.parent / "assets", folder / "assets")
+    command = json.loads(PROJECT_FILE.read_text(encoding="utf-8"))["commands"][1]
+    mapfile = folder / "levels" / "01-first-steps.tmx"
+    arguments = command["arguments"].replace("%mapfile", str(mapfile)).split()
+    arguments[arguments.index(str(mapfile).split()[0]):] = [str(mapfile)]  # Tiled's quotes
+    result = subprocess.run([sys.executable, *arguments, "--no-solve"], capture_output=True,
+                            text=True, timeout=60, check=False,
+                            cwd=str(folder / "levels" / ".."))
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert result.stdout.startswith("checked 1 map(s): all playable")
 
 
 def test_pytmx_reads_the_exported_property_types() -> None:

@@ -93,3 +93,14 @@ def test_a_class_like_nothing_the_game_knows_stays_a_warning(tmp_path: Path) -> 
                                                    'x="200" y="32" width="16" height="16"/>')
     assert errors(path) == []
     assert any("class 'Decoration' means nothing to the game" in w for w in warnings(path))
+
+
+def test_a_map_whose_classes_were_stripped_says_so_and_how_to_recover(tmp_path: Path) -> None:
+    path = write_tmx(tmp_path, OPEN)
+    path.write_text(path.read_text(encoding="utf-8").replace(' type="Player"', "")
+                    .replace(' type="Exit"', ""), encoding="utf-8")
+    with pytest.raises(LevelError) as caught:
+        load_level(path)
+    message = str(caught.value)
+    assert "none of the map's 2 objects has a Class" in message
+    assert "Tiled 1.8 drops the classes" in message and "tile-hopper-1.8.tiled-project" in message

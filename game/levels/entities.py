@@ -221,6 +221,15 @@ def build_entities(objects: list[MapObject], header: MapHeader, grid: TileGrid,
                 findings.warn(o.place, f"the {cls.name} floats: no Solid or OneWay tile is "
                               "right under it", f"move the {cls.name} down until its bottom "
                               "edge rests on the ground")
+    if not spawns and objects and not any(o.cls for o in objects):
+        findings.fail("", f"none of the map's {len(objects)} objects has a Class, so there "
+                      "is no Player; Tiled 1.8 drops the classes of a map saved by Tiled "
+                      "1.9 or later (it cannot read class=) when it saves the map again",
+                      "get the map back from before Tiled 1.8 saved it (version control, a "
+                      "backup), or set each object's Type again; open the levels in Tiled "
+                      "1.8 through levels/tile-hopper-1.8.tiled-project and in Tiled 1.9+ "
+                      "through levels/tile-hopper.tiled-project, which makes Tiled 1.9+ "
+                      "write classes that Tiled 1.8 keeps")
     if not spawns:
         findings.fail("", "this map has no Player object",
                       "add a point or rectangle with Class 'Player' on an object layer")

@@ -1,18 +1,28 @@
 """Write the game's classes where Tiled and pytmx look for them.
 
-Where it sits: ``python -m game.levels types --write`` regenerates three files in
+Where it sits: ``python -m game.levels types --write`` regenerates four files in
 ``levels/`` from :mod:`game.levels.classes`, and a test fails when the committed files
 differ from what this module generates. Edit the classes in Python, never in Tiled.
 
-============================  ============================================================
-``tile-hopper.tiled-project``  Tiled's project: folders, Play/Check commands, and the
-                               classes as ``propertyTypes`` (Tiled 1.9+ applies their
-                               colours and defaults to objects whose Class is set)
-``objecttypes.xml``            the same classes as Tiled 1.8's object types, which the
-                               project names, so Tiled 1.8 shows the defaults and colours
-``propertytypes.json``         the classes as Tiled's "Export Types" JSON, which pytmx reads
-                               with ``TiledMap(custom_property_filename=...)``
-============================  ============================================================
+================================  ========================================================
+``tile-hopper.tiled-project``      the project for Tiled 1.9 and later: folders, the Play
+                                   and Check commands, and the classes as
+                                   ``propertyTypes`` (with their colours, defaults and the
+                                   Enemy ``kind`` list). It names no object types file, so
+                                   Tiled 1.9+ imports nothing over these classes, and it
+                                   asks Tiled to write files Tiled 1.8 can read (a class is
+                                   written as ``type=``, which Tiled 1.8 keeps).
+``tile-hopper-1.8.tiled-project``  the project for Tiled 1.8: the same folders and
+                                   commands, the ``kind`` list, and ``objecttypes.xml``
+``objecttypes.xml``                the classes as Tiled 1.8's object types (defaults and
+                                   colours); only the 1.8 project names it
+``propertytypes.json``             the classes as Tiled's "Export Types" JSON, which pytmx
+                                   reads with ``TiledMap(custom_property_filename=...)``
+================================  ========================================================
+
+The commands run ``python`` from the ``PATH`` with the project's parent folder as the
+working folder, and Tiled quotes the map's path (``%mapfile``), so they work on Windows
+too and from folders whose names hold spaces.
 
 What it teaches: generated files that are committed must be checked for staleness, or the
 copy drifts from its source.
@@ -32,10 +42,12 @@ from game.levels import LEVELS_DIR
 from game.levels.classes import CLASSES, Member, TiledClass
 
 PROJECT_FILE = LEVELS_DIR / "tile-hopper.tiled-project"
+PROJECT_FILE_1_8 = LEVELS_DIR / "tile-hopper-1.8.tiled-project"
 OBJECT_TYPES_FILE = LEVELS_DIR / "objecttypes.xml"
 PROPERTY_TYPES_FILE = LEVELS_DIR / "propertytypes.json"
 
-PYTHON = "%projectpath/../.venv/bin/python"  # the virtual environment of the README
+PYTHON = "python"  # the first on the PATH: start Tiled where the game's Python is active
+COMPATIBLE_WITH_TILED_1_8 = 1080  # Tiled's "compatibility version" for files 1.8 reads
 COMMANDS = (("Play this level", "-m game --level %mapfile --watch", "F5"),
             ("Check this level", "-m game.levels check %mapfile", "F6"))
 
@@ -67,15 +79,28 @@ def property_types(classes: tuple[TiledClass, ...] = CLASSES) -> list[dict[str, 
     return types
 
 
+def _commands() -> list[dict[str, Any]]:
+    return [{"arguments": arguments, "command": PYTHON, "enabled": True, "name": name,
+             "saveBeforeExecute": True, "shortcut": shortcut, "showOutput": True,
+             "workingDirectory": "%projectpath/.."}
+            for name, arguments, shortcut in COMMANDS]
+
+
 def project() -> dict[str, Any]:
-    """The ``.tiled-project`` file's content (Tiled 1.8's keys; later versions add more)."""
-    commands = [{"arguments": arguments, "command": PYTHON, "enabled": True, "name": name,
-                 "saveBeforeExecute": True, "shortcut": shortcut, "showOutput": True,
-                 "workingDirectory": "%projectpath/.."}
-                for name, arguments, shortcut in COMMANDS]
-    return {"automappingRulesFile": "", "commands": commands, "extensionsPath": "extensions",
-            "folders": [".", "../assets"], "objectTypesFile": OBJECT_TYPES_FILE.name,
+    """The project for Tiled 1.9 and later: the classes, and no object types file."""
+    return {"automappingRulesFile": "", "commands": _commands(),
+            "compatibilityVersion": COMPATIBLE_WITH_TILED_1_8, "extensionsPath": "extensions",
+            "folders": [".", "../assets"], "objectTypesFile": "",
             "propertyTypes": property_types()}
+
+
+def project_1_8() -> dict[str, Any]:
+    """The project for Tiled 1.8: object types from ``objecttypes.xml``, and only the enums
+    as property types (Tiled 1.8 has no object classes)."""
+    enums = [entry for entry in property_types() if entry["type"] == "enum"]
+    return {"automappingRulesFile": "", "commands": _commands(),
+            "extensionsPath": "extensions", "folders": [".", "../assets"],
+            "objectTypesFile": OBJECT_TYPES_FILE.name, "propertyTypes": enums}
 
 
 def _default_text(value: object) -> str:
@@ -105,6 +130,7 @@ def _json_text(data: object) -> str:
 def generated_files() -> dict[Path, str]:
     """Each generated file and the text it should hold."""
     return {PROJECT_FILE: _json_text(project()),
+            PROJECT_FILE_1_8: _json_text(project_1_8()),
             OBJECT_TYPES_FILE: object_types(),
             PROPERTY_TYPES_FILE: _json_text(property_types())}
 
