@@ -25,7 +25,9 @@ What it teaches: a **beam search** over a deterministic simulation.
   into it.
 * **Best first, then beams.** First a best-first search always carries on from the state
   with the best score (counting time a little); it is quick where no waiting is needed.
-  If it has not found a route after :attr:`Effort.greedy_moves` moves, beams take over.
+  If it has not found a route after :attr:`Effort.greedy_moves` moves, beams take over. On
+  a level with moving platforms the beams go first: waiting for a platform never improves
+  the score, so a best-first search would never wait.
 * **Widening.** A narrow beam is fast but can throw away the one state that needed to wait.
   When a beam dies out, or stops getting closer for a while, the search starts again wider.
 
@@ -223,9 +225,10 @@ class _Search:
         if self.sealed:  # no route can exist: just find how close one can get
             self.best_first(min(self.effort.greedy_moves, SEALED_MOVES))
             return None
-        found = self.best_first(self.effort.greedy_moves)
-        if found is not None or self.out_of_time():
-            return found
+        if not self.world.platforms:  # waiting never looks better to a best-first search
+            found = self.best_first(self.effort.greedy_moves)
+            if found is not None or self.out_of_time():
+                return found
         for width in self.effort.widths:
             found = self.beam(width)
             if found is not None or self.out_of_time():
