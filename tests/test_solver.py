@@ -3,6 +3,7 @@ winning script is the one the solver writes), and a walled-in Exit is refused by
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -161,3 +162,14 @@ def test_the_reach_is_measured_from_the_tuning() -> None:
     assert 2.5 * 16 < default.height_px < 3 * 16          # about 44 px: a plank 3 tiles up is out
     higher = measure_reach(Tuning(jump_speed_px_s=400.0))
     assert higher.height_px > default.height_px and higher.distance_px > default.distance_px
+
+
+def test_the_guide_quotes_the_measured_reach_and_its_pictures_exist() -> None:
+    guide = (LEVELS_DIR / "README.md").read_text(encoding="utf-8")
+    reach = measure_reach(Tuning())
+    assert (f"lifts the feet\n{reach.height_px / 16:.1f} tiles ({reach.height_px:.0f} px) and "
+            f"carries them {reach.distance_px / 16:.1f} tiles ({reach.distance_px:.0f} px)"
+            in guide)
+    pictures = re.findall(r"\]\((\.\./assets/guide/[^)]+)\)", guide)
+    assert len(pictures) >= 5
+    assert all((LEVELS_DIR / picture).is_file() for picture in pictures)

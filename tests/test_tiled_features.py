@@ -26,7 +26,7 @@ def test_hop_along_has_an_animated_tile_and_a_parallax_layer() -> None:
     level = load_level(HOP_ALONG)
     assert level.animations and all(len(frames) == 4 for frames in level.animations.values())
     drawn = {layer.name: layer for layer in level.layers}
-    assert drawn["far clouds"].parallax == (0.5, 1.0)
+    assert drawn["far fence"].parallax == (0.5, 1.0)
     assert drawn["ground"].parallax == (1.0, 1.0)
     used = {gid for layer in level.layers for row in layer.gids for gid in row}
     assert used & set(level.animations)

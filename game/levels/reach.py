@@ -47,8 +47,9 @@ class Reach:
                 f"{self.distance_px / tile_px:.1f} tiles across at a run ({tile_px} px tiles)")
 
 
-def measure_reach(tuning: Tuning) -> Reach:
-    """The reach of a full jump with ``tuning``, on a flat floor with nothing overhead."""
+def jump_path(tuning: Tuning) -> list[Box]:
+    """The hitbox at take-off and after every tick of a full jump at a run, until it lands,
+    on a flat floor with nothing overhead."""
     floor_row = TEST_ROWS - 1
     grid = TileGrid(TEST_COLS, TEST_ROWS, TEST_TILE_PX, TEST_TILE_PX)
     for col in range(TEST_COLS):
@@ -61,11 +62,19 @@ def measure_reach(tuning: Tuning) -> Reach:
     run, jump = frozenset({Action.RIGHT}), frozenset({Action.RIGHT, Action.JUMP})
     for _ in range(RUN_UP_TICKS):
         world.step(run)
-    take_off = world.player.box
-    highest = take_off.y
+    path = [world.player.box]
     for _ in range(MAX_AIR_TICKS):
         world.step(jump)
-        highest = min(highest, world.player.box.y)
+        path.append(world.player.box)
         if world.player.on_ground:
             break
-    return Reach(take_off.y - highest, world.player.box.x - take_off.x)
+    return path
+
+
+def measure_reach(tuning: Tuning) -> Reach:
+    """The reach of a full jump with ``tuning``: the highest point and the landing place of
+    :func:`jump_path`."""
+    path = jump_path(tuning)
+    take_off = path[0]
+    highest = min(box.y for box in path)
+    return Reach(take_off.y - highest, path[-1].x - take_off.x)

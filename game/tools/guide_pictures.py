@@ -1,0 +1,133 @@
+"""Make the pictures of the level designer's guide (``levels/README.md``) with the game.
+
+Run from the repository root::
+
+    python -m game.tools.guide_pictures
+
+It (re)writes, in ``assets/guide/``:
+
+* ``player-point.png``: a Player drawn as a point, and the hitbox the game hangs from it
+  (its top-left corner on the point), over the game's own tiles;
+* ``reach.png``: the path of the feet in a full running jump, recorded tick by tick from
+  the real simulation (:func:`game.levels.reach.jump_path`), over a grid of 16 px tiles
+  with ledges 3 and 2 tiles up;
+* ``hop-along-tick-60.png`` and ``hop-along-tick-100.png``: the game's own screenshots of
+  Hop Along at two ticks, where the pennant has waved on and the far clouds have scrolled
+  half as far as the ground;
+* ``route-first-steps.png``: ``python -m game.levels solve``'s picture of the route it
+  found through the first level.
+
+Every picture is drawn by game code from game data; nothing is drawn by hand.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pygame
+
+from game.levels import FIRST_LEVEL, LEVELS_DIR
+from game.levels.reach import jump_path
+from game.sim.tuning import Tuning
+
+ROOT = Path(__file__).resolve().parents[2]
+GUIDE = ROOT / "assets" / "guide"
+TILE = 16
+SCALE = 3  # the diagrams are drawn at 16 px a tile, then enlarged this many times
+SKY = (143, 211, 255)
+GRID = (120, 180, 230)
+HITBOX = (217, 83, 79)
+POINT = (58, 123, 213)
+PATH = (255, 255, 255)
+PATH_EDGE = (30, 30, 60)
+GROUND_TILE, BRICK_TILE = 0, 2  # ids in assets/tiles.png
+
+
+def _tile(sheet: pygame.Surface, tile_id: int) -> pygame.Surface:
+    columns = sheet.get_width() // TILE
+    row, col = divmod(tile_id, columns)
+    return sheet.subsurface((col * TILE, row * TILE, TILE, TILE))
+
+
+def _canvas(cols: int, rows: int) -> pygame.Surface:
+    canvas = pygame.Surface((cols * TILE, rows * TILE))
+    canvas.fill(SKY)
+    for col in range(cols + 1):
+        pygame.draw.line(canvas, GRID, (col * TILE, 0), (col * TILE, rows * TILE))
+    for row in range(rows + 1):
+        pygame.draw.line(canvas, GRID, (0, row * TILE), (cols * TILE, row * TILE))
+    return canvas
+
+
+def _save(canvas: pygame.Surface, name: str) -> None:
+    big = pygame.transform.scale(canvas, (canvas.get_width() * SCALE,
+                                          canvas.get_height() * SCALE))
+    pygame.image.save(big, str(GUIDE / name))
+
+
+def player_point(sheet: pygame.Surface) -> None:
+    """A point at (40, 18): the 12x14 hitbox hangs below and right of it."""
+    tuning = Tuning()
+    canvas = _canvas(6, 3)
+    for col in range(6):
+        canvas.blit(_tile(sheet, GROUND_TILE), (col * TILE, 2 * TILE))
+    x, y = 40, 2 * TILE - tuning.player_height_px
+    pygame.draw.rect(canvas, HITBOX, (x, y, tuning.player_width_px,
+                                      tuning.player_height_px), 1)
+    pygame.draw.circle(canvas, POINT, (x, y), 2)
+    _save(canvas, "player-point.png")
+
+
+def reach(sheet: pygame.Surface) -> None:
+    """A running jump from the left, with ledges 2 and 3 tiles above the floor."""
+    cols, rows = 14, 6
+    floor_row = rows - 1
+    canvas = _canvas(cols, rows)
+    for col in range(cols):
+        canvas.blit(_tile(sheet, GROUND_TILE), (col * TILE, floor_row * TILE))
+    for col in range(8, 10):
+        canvas.blit(_tile(sheet, BRICK_TILE), (col * TILE, (floor_row - 3) * TILE))
+    for col in range(11, 13):
+        canvas.blit(_tile(sheet, BRICK_TILE), (col * TILE, (floor_row - 2) * TILE))
+    path = jump_path(Tuning())
+    start_x, floor_y = path[0].x, path[0].bottom
+    # The path of the feet (the middle of the hitbox's bottom edge), from the take-off.
+    points = [(TILE + box.center[0] - start_x, floor_row * TILE - (floor_y - box.bottom))
+              for box in path]
+    pygame.draw.lines(canvas, PATH_EDGE, False, points, 3)
+    pygame.draw.lines(canvas, PATH, False, points, 1)
+    _save(canvas, "reach.png")
+
+
+def screenshots() -> None:
+    """Hop Along at ticks 60 and 90, running right with the winning script."""
+    level = LEVELS_DIR / "03-hop-along.tmx"
+    script = ROOT / "tests" / "scripts" / "03-hop-along.txt"
+    env = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy"}
+    for ticks in (60, 100):
+        subprocess.run([sys.executable, "-m", "game", "--headless", "--level", str(level),
+                        "--inputs", str(script), "--ticks", str(ticks), "--screenshot",
+                        str(GUIDE / f"hop-along-tick-{ticks}.png")], env=env, check=True)
+
+
+def route() -> None:
+    env = {**os.environ, "SDL_VIDEODRIVER": "dummy"}
+    subprocess.run([sys.executable, "-m", "game.levels", "solve", str(FIRST_LEVEL), "--out",
+                    os.devnull, "--picture", str(GUIDE / "route-first-steps.png")],
+                   env=env, check=True)
+
+
+def main() -> None:
+    GUIDE.mkdir(parents=True, exist_ok=True)
+    sheet = pygame.image.load(str(ROOT / "assets" / "tiles.png"))
+    player_point(sheet)
+    reach(sheet)
+    screenshots()
+    route()
+
+
+if __name__ == "__main__":
+    main()
