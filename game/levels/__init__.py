@@ -1,7 +1,9 @@
 """Levels: the shipped campaign, and the loader that turns Tiled maps into playable levels.
 
 ``load_level(path)`` reads a map for the game; ``check_level(path)`` lists everything wrong
-with one. ``python -m game.levels check PATH...`` prints those findings, and
+with one. ``python -m game.levels check PATH...`` prints those findings and proves each map
+can be won with :mod:`game.levels.solver` (``python -m game.levels solve MAP`` shows the
+route), and
 ``python -m game.levels types --write`` regenerates the Tiled project's class definitions
 (see ``levels/README.md``, the level designer's guide).
 """
