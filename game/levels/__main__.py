@@ -124,7 +124,13 @@ def solve_command(path: Path, out: Path | None, picture: Path | None,
         return 1
     solution = solve(level, Effort(seconds=seconds))
     if picture is not None:
-        save_route(picture, level, solution.route, None if solution.found else solution.furthest)
+        try:
+            save_route(picture, level, solution.route,
+                       None if solution.found else solution.furthest)
+        except (OSError, pygame.error) as error:
+            print(f"{picture}: the picture cannot be written ({error}) — check the path",
+                  file=sys.stderr)
+            return 1
     if not solution.found:
         col, row = solution.furthest_tile()
         why = f"in {seconds:g} s" if solution.timed_out and seconds is not None else \
@@ -135,7 +141,12 @@ def solve_command(path: Path, out: Path | None, picture: Path | None,
         return 1
     script = solution.script()
     if out is not None:
-        out.write_text(script, encoding="utf-8")
+        try:
+            out.write_text(script, encoding="utf-8")
+        except OSError as error:
+            print(f"{out}: the script cannot be written ({error.strerror}) — check the path",
+                  file=sys.stderr)
+            return 1
     else:
         sys.stdout.write(script)
     print(f"{path}: a route reaches the exit at tick {solution.exit_tick} "
