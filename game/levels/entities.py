@@ -222,8 +222,8 @@ def build_entities(objects: list[MapObject], header: MapHeader, grid: TileGrid,
                               "right under it", f"move the {cls.name} down until its bottom "
                               "edge rests on the ground")
     if not spawns and objects and not any(o.cls for o in objects):
-        findings.fail("", f"none of the map's {len(objects)} objects has a Class, so there "
-                      "is no Player; Tiled 1.8 drops the classes of a map saved by Tiled "
+        findings.fail("", f"none of the map's {len(objects)} objects has a Class, so this "
+                      "map has no Player object; Tiled 1.8 drops the classes of a map saved by Tiled "
                       "1.9 or later (it cannot read class=) when it saves the map again",
                       "get the map back from before Tiled 1.8 saved it (version control, a "
                       "backup), or set each object's Type again; open the levels in Tiled "
