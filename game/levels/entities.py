@@ -223,8 +223,8 @@ def build_entities(objects: list[MapObject], header: MapHeader, grid: TileGrid,
                               "edge rests on the ground")
     if not spawns and objects and not any(o.cls for o in objects):
         findings.fail("", f"none of the map's {len(objects)} objects has a Class, so this "
-                      "map has no Player object; Tiled 1.8 drops the classes of a map saved by Tiled "
-                      "1.9 or later (it cannot read class=) when it saves the map again",
+                      "map has no Player object; Tiled 1.8 drops the classes of a map saved "
+                      "by Tiled 1.9 or later (it cannot read class=) when it saves it again",
                       "get the map back from before Tiled 1.8 saved it (version control, a "
                       "backup), or set each object's Type again; open the levels in Tiled "
                       "1.8 through levels/tile-hopper-1.8.tiled-project and in Tiled 1.9+ "
