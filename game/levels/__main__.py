@@ -5,9 +5,10 @@ up to date.
 (warnings say ``warning:`` before the message), and exits 0 when every map is playable,
 1 otherwise, 2 for bad usage. A folder stands for the ``.tmx`` maps inside it. Never a
 traceback, whatever the input. A map that loads is also *solved*
-(:mod:`game.levels.solver`): if no route from the spawn to an Exit is found within
-``--solve-seconds``, that is an error naming the furthest place reached; ``--no-solve``
-skips this. The summary line, on stdout, says how high and far the player jumps.
+(:mod:`game.levels.solver`): if the search gives up without reaching an Exit, that is an
+error naming the furthest place reached; if it runs out of time (``--solve-seconds``), a
+warning; ``--no-solve`` skips the search. The summary line, on stdout, says how high and
+far the player jumps.
 
 ``solve MAP [--out SCRIPT] [--picture PNG] [--seconds S]`` searches for that route, writes
 it as an input script and draws it over the map; exit 0 when found, 1 when the map is bad or
@@ -62,18 +63,23 @@ def _maps(path: Path) -> Iterator[tuple[Path, str | None]]:
         yield from ((map_path, None) for map_path in found)
 
 
-def _unsolved(path: Path, seconds: float | None) -> str | None:
-    """The error line for a map whose Exit the solver could not reach, or None."""
+def _unsolved(path: Path, seconds: float | None) -> tuple[str, bool] | None:
+    """The line for a map whose Exit the solver did not reach, and whether it is an error
+    (the search gave up) or a warning (it ran out of time, which proves nothing)."""
     level = load_level(path)
     solution = solve(level, Effort(seconds=seconds))
     if solution.found:
         return None
     col, row = solution.furthest_tile()
-    within = f" within {seconds:g} s" if solution.timed_out and seconds is not None else ""
-    return (f"{path}: tile ({col},{row}): the exit was not reached from the spawn{within}; "
-            f"this is the furthest place reached — check the jumps on the way against the "
-            f"player's reach, or run python -m game.levels solve {path} --picture route.png "
-            "to see how far the search got")
+    if solution.timed_out and seconds is not None:
+        return (f"{path}: tile ({col},{row}): warning: no route to an Exit was found within "
+                f"{seconds:g} s; this is the furthest place reached — give the search more "
+                "time with --solve-seconds, or run python -m game.levels solve on this map",
+                False)
+    return (f"{path}: tile ({col},{row}): the exit was not reached from the spawn; this is "
+            "the furthest place reached — check the jumps on the way against the player's "
+            f"reach, or run python -m game.levels solve {path} --picture route.png to see "
+            "how far the search got", True)
 
 
 def _reach_summary(paths: list[Path]) -> str:
@@ -98,8 +104,8 @@ def check(paths: list[Path], solve_seconds: float | None = DEFAULT_SOLVE_SECONDS
                 if not failed and solve_seconds is not None:
                     unsolved = _unsolved(path, solve_seconds)
                     if unsolved is not None:
-                        lines.append(unsolved)
-                        failed = True
+                        lines.append(unsolved[0])
+                        failed = unsolved[1]
             except Exception as error:  # a loader bug still gets a sentence
                 lines = [f"{path}: the map could not be read ({type(error).__name__}: "
                          f"{error}) — open it in Tiled and save it again"]
