@@ -77,8 +77,8 @@ def test_a_small_map_loads_its_floor_spawn_and_exit(tmp_path: Path) -> None:
 
 
 def test_layers_keep_document_order_across_kinds_and_inside_groups(tmp_path: Path) -> None:
-    body = (layer(name="back") + '<group name="g" offsetx="0.5">' + layer(name="inner")
-            + "</group>")
+    body = (layer(name="back") + '<group name="g" offsetx="0.5">'
+            + layer("0,0,0,0,0,0,0,0,0,0,0,0", "inner") + "</group>")  # drawn only: offset kept
     objects = OBJECTS + '<group name="top">' + layer("0,0,0,0,0,0,0,0,0,0,0,0", "front") + \
         "</group>"
     level = load_level(write_map(tmp_path, body, objects=objects))
