@@ -9,8 +9,7 @@ sprite in its groups, every enemy, the camera, the contact tracker), the values 
 and for every sprite group, which sprites are in it. It copies no pictures (``Surface``\\s)
 and no level data (the tile grid, the tuning): those never change in a tick and are shared.
 Restoring writes the values back in place, so everything holding a reference to the world
-or its sprites stays valid, then rebuilds what is derived from them (the index of the cells
-each moving platform is in). Values are immutable (floats, boxes, frozen records) or
+or its sprites stays valid. Values are immutable (floats, boxes, frozen records) or
 containers copied one level deep, so stepping on never changes a snapshot already taken.
 
 >>> from game.sim.level import Level
@@ -98,7 +97,3 @@ class Snapshot:
             if tuple(group.sprites()) != sprites:
                 group.empty()
                 group.add(*sprites)
-        # Derived state is rebuilt from what was restored, not copied: the index of which
-        # cells hold which platform follows the platforms' boxes.
-        for platform in world.platforms:
-            world.solids.moved(platform)
