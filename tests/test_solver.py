@@ -58,6 +58,25 @@ def test_a_restored_snapshot_replays_exactly_as_the_first_time(name: str) -> Non
     assert len({s[0] for s in first}) > 200  # the player really moved in between
 
 
+def run_right(world: World, ticks: int) -> list[tuple[object, ...]]:
+    states = [state(world)]
+    for _ in range(ticks):
+        world.step(frozenset({Action.RIGHT}))
+        states.append(state(world))
+    return states
+
+
+def test_a_snapshot_taken_before_the_first_tick_restores_the_start() -> None:
+    level = load_level(LEVELS_DIR / "04-moving-parts.tmx")
+    world = World(level)
+    saved = Snapshot.of(world)
+    right = frozenset({Action.RIGHT})
+    for _ in range(200):
+        world.step(right)
+    saved.restore(world)
+    assert run_right(world, 200) == run_right(World(level), 200)
+
+
 def test_stepping_on_after_a_snapshot_does_not_change_it() -> None:
     world = World(load_level(FIRST))
     saved = Snapshot.of(world)

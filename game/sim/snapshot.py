@@ -9,8 +9,10 @@ sprite in its groups, every enemy, the camera, the contact tracker), the values 
 and for every sprite group, which sprites are in it. It copies no pictures (``Surface``\\s)
 and no level data (the tile grid, the tuning): those never change in a tick and are shared.
 Restoring writes the values back in place, so everything holding a reference to the world
-or its sprites stays valid. Values are immutable (floats, boxes, frozen records) or
-containers copied one level deep, so stepping on never changes a snapshot already taken.
+or its sprites stays valid, and removes attributes set since (they were class defaults then,
+like a platform's distance travelled before its first tick). Values are immutable (floats,
+boxes, frozen records) or containers copied one level deep, so stepping on never changes a
+snapshot already taken.
 
 >>> from game.sim.level import Level
 >>> from game.sim.tilegrid import TileGrid
@@ -43,15 +45,16 @@ _SPRITE_GROUPS = "_Sprite__g"  # pygame's record of a sprite's groups: rebuilt b
 _CONTAINERS = (list, set, dict, deque, bytearray)
 
 
+def _kept_apart(name: str, value: object) -> bool:
+    """Attributes a snapshot neither copies nor restores: pictures, groups, group records."""
+    return name == _SPRITE_GROUPS or isinstance(
+        value, (pygame.Surface, pygame.sprite.AbstractGroup))
+
+
 def _attributes(thing: object) -> dict[str, Any]:
     """The attributes of ``thing`` that a tick may change, copied one level deep."""
-    saved: dict[str, Any] = {}
-    for name, value in vars(thing).items():
-        if name == _SPRITE_GROUPS or isinstance(
-                value, (pygame.Surface, pygame.sprite.AbstractGroup)):
-            continue
-        saved[name] = copy.copy(value) if isinstance(value, _CONTAINERS) else value
-    return saved
+    return {name: copy.copy(value) if isinstance(value, _CONTAINERS) else value
+            for name, value in vars(thing).items() if not _kept_apart(name, value)}
 
 
 def _changing_things(world: World) -> list[object]:
@@ -91,8 +94,14 @@ class Snapshot:
     def restore(self, world: World) -> None:
         """Put ``world`` back as it was when this snapshot was taken."""
         for thing, saved in self.attributes:
-            vars(thing).update({name: copy.copy(value) if isinstance(value, _CONTAINERS)
-                                else value for name, value in saved.items()})
+            current = vars(thing)
+            # An attribute set since the snapshot was a class default then: drop it, so the
+            # default shows through again.
+            for name in [name for name, value in current.items()
+                         if name not in saved and not _kept_apart(name, value)]:
+                del current[name]
+            current.update({name: copy.copy(value) if isinstance(value, _CONTAINERS)
+                            else value for name, value in saved.items()})
         for group, sprites in self.members:
             if tuple(group.sprites()) != sprites:
                 group.empty()
