@@ -34,8 +34,11 @@ def test_hop_along_has_an_animated_tile_and_a_parallax_layer() -> None:
 
 def test_the_frames_of_an_animated_tile_are_loaded_with_the_images() -> None:
     pygame.display.init()
-    pygame.display.set_mode((1, 1))
-    level = load_level(HOP_ALONG, images=True)
+    try:
+        pygame.display.set_mode((1, 1))
+        level = load_level(HOP_ALONG, images=True)
+    finally:
+        pygame.display.quit()  # leave no window behind for the next test
     for frames in level.animations.values():
         assert all(gid in level.tile_images for gid, _ in frames)
 
