@@ -75,7 +75,7 @@ def test_a_misspelt_tile_class_names_the_tile_and_the_class_it_meant(tmp_path: P
     tileset.write_text(tileset.read_text(encoding="utf-8").replace('"Solid"', '"Soild"'),
                        encoding="utf-8")
     found = errors(path)
-    assert any("tileset 't' (t.tsx) tile 0: class 'Soild' is not a class the game knows; "
+    assert any("t.tsx" in e and "tile 0: class 'Soild' is not a class the game knows; "
                "it looks like 'Solid' misspelt" in e and "set the tile's Class to Solid" in e
                for e in found), found
 
