@@ -44,9 +44,11 @@ def display() -> Iterator[None]:
 
 
 def ticks_at_each_frame(batches: list[list[pygame.event.Event]],
-                        monkeypatch: pytest.MonkeyPatch) -> list[int]:
+                        monkeypatch: pytest.MonkeyPatch,
+                        pictures: list[pygame.Surface] | None = None) -> list[int]:
     """Play a level in the window, feeding it one batch of events per frame, and return the
-    tick count the campaign had reached as each frame began."""
+    tick count the campaign had reached as each frame began (and, into ``pictures``, the
+    player's picture then)."""
     level = level_from_ascii(["          ", " P        ", "##########"])
     args = parser().parse_args(["--level", "x.tmx", "--debug", "--ticks", "1000000"])
     run = Run(Campaign(Path("x.tmx"), loader=lambda _: level), None, args)
@@ -55,6 +57,8 @@ def ticks_at_each_frame(batches: list[list[pygame.event.Event]],
 
     def next_batch(*_: object, **__: object) -> list[pygame.event.Event]:
         seen.append(run.campaign.ticks)
+        if pictures is not None:
+            pictures.append(run.campaign.world.player.image)
         return feed.pop(0)
 
     monkeypatch.setattr(pygame.event, "get", next_batch)
@@ -76,6 +80,18 @@ def test_freeze_step_and_the_overlay_switch_drive_the_window_tick_by_tick(
     assert runs[:8] == [0, 0, 0, 0, 1, 0, 2, 0]
     assert sum(runs[8:15]) > 0
     assert runs[15:] == [0, 0, 0]
+
+
+def test_a_frozen_game_stands_still_on_screen_too(display: None,
+                                                 monkeypatch: pytest.MonkeyPatch) -> None:
+    pictures: list[pygame.Surface] = []
+    idle_loop_frames = 60  # the player's idle animation changes picture twice a second
+    landing: list[list[pygame.event.Event]] = [[] for _ in range(20)]  # drop onto the floor
+    seen = ticks_at_each_frame([*landing, [key(FREEZE_KEY)],
+                                *([] for _ in range(idle_loop_frames))], monkeypatch, pictures)
+    frozen = len(landing) + 1
+    assert seen[frozen] > 0 and len(set(seen[frozen:])) == 1
+    assert len({id(picture) for picture in pictures[frozen + 1:]}) == 1
 
 
 def test_quarter_speed_runs_a_quarter_of_the_ticks_and_f4_unfreezes() -> None:

@@ -264,8 +264,10 @@ def play_in_window(run: Run) -> int:
         dirty, last_shown = False, shown
         target = pygame.display.get_surface()
         if menus.screen not in MENU_SCREENS:
-            render_frame(run.campaign, debug=debug, renderer=renderer, frame=frame,
-                         fps=clock.get_fps(), update_ms=run.last_update_ms,
+            # Sprites animate by game time: still while paused or frozen, slow when slowed.
+            render_frame(run.campaign, debug=debug, renderer=renderer,
+                         frame=run.campaign.ticks, fps=clock.get_fps(),
+                         update_ms=run.last_update_ms,
                          world=banner.world if banner is not None else None,
                          debug_lines=stepping.lines(run.campaign.ticks))
         if banner is not None:
