@@ -27,7 +27,8 @@ What it teaches:
     sprite's ``image`` and ``rect`` are exactly what appears, so the picture, the rect and
     the physics box cannot disagree (:mod:`game.sim.sprite`). The renderer only hands each
     new sprite its pictures once (:meth:`WorldRenderer.strip_for`).
-  * **Draw static things once.** A tile layer never changes in play, so it is drawn into
+  * **Draw static things once.** A layer's still tiles never change in play (its animated
+    ones are drawn each frame over them), so they are drawn into
     chunks of :data:`CHUNK_PX` pixels square the first time they come into view, and each
     frame blits the two to six chunks of each layer that the camera sees instead of up to
     252 tiles one by one. Chunks, not one picture of the whole map, so a huge map costs
