@@ -7,3 +7,19 @@ import os
 os.environ["SDL_VIDEODRIVER"] = "dummy"
 os.environ["SDL_AUDIODRIVER"] = "dummy"
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
+
+from collections.abc import Iterator
+
+import pygame
+import pytest
+
+from game.app.assets import Assets, load_assets
+
+
+@pytest.fixture(scope="module")
+def assets() -> Iterator[Assets]:
+    """The game's pictures, loaded on a 320x180 display that closes after the module."""
+    pygame.display.init()
+    pygame.display.set_mode((320, 180))
+    yield load_assets()
+    pygame.display.quit()

@@ -3,12 +3,9 @@ the shapes it tested, read from the tick's query log, and nothing else."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-
 import pygame
-import pytest
 
-from game.app.assets import Assets, load_assets
+from game.app.assets import Assets
 from game.app.debug_overlay import Checked, draw_debug
 from game.app.render import screen_offset
 from game.collision.aabb import Box
@@ -23,14 +20,6 @@ BLACK = pygame.Color(0, 0, 0)
 # A shaft 40 tiles deep at the right of a wide map, so the panel (top left) covers none of it.
 SHAFT = ["#" * 24 + ".P." + "#" * 3, *(["#" * 24 + "..." + "#" * 3] * 38), "#" * 30]
 FLOOR = ["            ", "            ", "        P   ", "############"]
-
-
-@pytest.fixture(scope="module")
-def assets() -> Iterator[Assets]:
-    pygame.display.init()
-    pygame.display.set_mode((320, 180))
-    yield load_assets()
-    pygame.display.quit()
 
 
 def overlay_alone(world: World, assets: Assets) -> pygame.Surface:

@@ -5,13 +5,12 @@ layers are drawn once into cached chunks that show exactly the tiles."""
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
 from dataclasses import replace
 
 import pygame
 import pytest
 
-from game.app.assets import Assets, load_assets
+from game.app.assets import Assets
 from game.app.render import (
     CHUNK_PX,
     Layer,
@@ -56,14 +55,6 @@ def everything_level() -> Level:
 def script(tick: int) -> Actions:
     """Run right, jumping now and then: over the gap, onto an enemy, into the coin."""
     return JUMP_RIGHT if tick % 50 < 12 else RIGHT
-
-
-@pytest.fixture(scope="module")
-def assets() -> Iterator[Assets]:
-    pygame.display.init()
-    pygame.display.set_mode((320, 180))
-    yield load_assets()
-    pygame.display.quit()
 
 
 def screen_rect(sprite: BoxSprite, camera: Camera) -> pygame.Rect:
