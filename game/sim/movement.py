@@ -40,6 +40,8 @@ from game.collision.aabb import Box
 from game.sim.tilegrid import Solids, TileKind, TileShape
 
 GROUND_PROBE_PX = 1.0  # height of the strip under the feet that looks for ground
+INF = math.inf
+_new = tuple.__new__  # Box(...) minus the Python-level __new__ a NamedTuple calls
 
 SOLID, ONE_WAY, HAZARD = TileKind.SOLID, TileKind.ONE_WAY, TileKind.HAZARD
 Edges = tuple[float, float, float, float]  # left, top, right, bottom
@@ -111,14 +113,14 @@ class Move:
         return Box(left, top, right - left, bottom - top)
 
 
-def _check_step(delta: float) -> None:
-    if not math.isfinite(delta):
-        raise ValueError(f"a step must be a finite number of pixels, not {delta}")
+def _refuse(delta: float) -> None:
+    raise ValueError(f"a step must be a finite number of pixels, not {delta}")
 
 
 def move_x(grid: Solids, box: Box, dx: float) -> Move:
     """Move ``box`` by ``dx`` along x, stopping flush at the nearest solid face or map edge."""
-    _check_step(dx)
+    if not -INF < dx < INF:  # NaN fails this too
+        _refuse(dx)
     if dx == 0:
         return Move(box, None, box, swept=box)
     x, y, w, h = box
@@ -133,7 +135,7 @@ def move_x(grid: Solids, box: Box, dx: float) -> Move:
         width = grid.width_px
         if right <= width < stop:
             stop, hit = width, Hit(Side.RIGHT, width, None)
-        return Move(Box(stop - w, y, w, h), hit, box, dx)
+        return Move(_new(Box, (stop - w, y, w, h)), hit, box, dx)
     stop = x + dx
     for _, _, face, _, kind, shape in grid.entries_in(stop, y, right, y + h):
         if kind is SOLID and stop < face <= x:
@@ -141,7 +143,7 @@ def move_x(grid: Solids, box: Box, dx: float) -> Move:
     hit = None if found is None else Hit(Side.LEFT, stop, found)
     if stop < 0 <= x:
         stop, hit = 0, Hit(Side.LEFT, 0, None)
-    return Move(Box(stop, y, w, h), hit, box, dx)
+    return Move(_new(Box, (stop, y, w, h)), hit, box, dx)
 
 
 def move_y(grid: Solids, box: Box, dy: float, *, through_one_way: bool = False) -> Move:
@@ -151,7 +153,8 @@ def move_y(grid: Solids, box: Box, dy: float, *, through_one_way: bool = False) 
     (one-way tops are skipped when ``through_one_way`` is set, to drop through them).
     Going up, only solid bottoms do. The map has no floor and no ceiling of its own.
     """
-    _check_step(dy)
+    if not -INF < dy < INF:
+        _refuse(dy)
     if dy == 0:
         return Move(box, None, box, swept=box)
     x, y, w, h = box
@@ -164,13 +167,13 @@ def move_y(grid: Solids, box: Box, dy: float, *, through_one_way: bool = False) 
                     and bottom <= face < stop):
                 stop, found = face, shape
         hit = None if found is None else Hit(Side.BOTTOM, stop, found)
-        return Move(Box(x, stop - h, w, h), hit, box, 0.0, dy)
+        return Move(_new(Box, (x, stop - h, w, h)), hit, box, 0.0, dy)
     stop = y + dy
     for _, _, _, face, kind, shape in grid.entries_in(x, stop, x + w, bottom):
         if kind is SOLID and stop < face <= y:
             stop, found = face, shape
     hit = None if found is None else Hit(Side.TOP, stop, found)
-    return Move(Box(x, stop, w, h), hit, box, 0.0, dy)
+    return Move(_new(Box, (x, stop, w, h)), hit, box, 0.0, dy)
 
 
 def slide_past_ceiling_corner(grid: Solids, box: Box, dy: float,

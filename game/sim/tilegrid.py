@@ -167,14 +167,12 @@ class TileGrid:
     log: QueryLog | None = None  # attached by whoever wants every query written down
     _cells: dict[int, list[Entry]] = field(default_factory=dict)
     _empty: list[tuple[int, TileShape]] = field(default_factory=list)
+    width_px: int = field(init=False)   # the map's size in px, read by every x move
+    height_px: int = field(init=False)
 
-    @property
-    def width_px(self) -> int:
-        return self.cols * self.tile_w
-
-    @property
-    def height_px(self) -> int:
-        return self.rows * self.tile_h
+    def __post_init__(self) -> None:
+        self.width_px = self.cols * self.tile_w
+        self.height_px = self.rows * self.tile_h
 
     def put(self, col: int, row: int, shape: TileShape) -> None:
         """Add a shape to cell ``(col, row)``; the shape must lie inside that cell.
