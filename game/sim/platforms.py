@@ -9,12 +9,11 @@ platform advances along its path, one axis at a time, and does two things to bod
   **carried** by the same amount, again through the swept move, so a ride never passes
   through a wall either.
 
-Then, for the bodies' own moves, the platforms are simply more solid shapes:
-:class:`SolidsWithPlatforms` answers region queries with the tile grid's shapes plus the
-platforms', so :mod:`game.sim.movement` needs no special case. The platforms are found
-through the grid's own cells (:class:`PlatformIndex`, a second layer that a platform is
-refiled in only when it crosses a cell border), so a query costs the platforms near it,
-not every platform in the level.
+Then, for the bodies' own moves, the platforms are simply more solid shapes: the world's
+tile grid carries them as a second layer (:class:`PlatformIndex`, each platform filed once
+in the cells its route can reach), and its one region query answers with the tiles plus the
+platforms in the cells it visits, so :mod:`game.sim.movement` needs no special case and a
+query costs the platforms near it, not every platform in the level.
 
 >>> path = Route(((0.0, 0.0), (30.0, 0.0)), loop=False)
 >>> [path.point_at(d) for d in (0.0, 10.0, 30.0, 40.0, 60.0)]    # there and back again
@@ -24,9 +23,10 @@ not every platform in the level.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
+from math import ceil, floor
 
 from game.collision.aabb import Box
 from game.sim.sprite import Anchor, BoxSprite
@@ -162,15 +162,17 @@ def route_region(spec: PlatformSpec) -> Box:
 class PlatformIndex:
     """Which platforms can be in which cells of the tile grid: a second layer over the tiles.
 
-    A platform is filed once, in every in-map cell its route region covers (every place its
-    route can take it). The tile grid's query looks up this layer in the same cells it
-    visits for tiles (:meth:`TileGrid.entries_in`), so a query costs the platforms that can
-    be near it, not every platform in the level; :meth:`near` tells the world which
-    platforms a body could meet this tick. A platform whose route leaves the map is kept
-    apart and tested by every query, since no cell holds the part of it out there.
+    A platform is filed once, when the level starts, in every in-map cell its route region
+    covers (every place its route can take it). The tile grid's query looks up this layer
+    in the same cells it visits for tiles (:meth:`TileGrid.entries_in`, on the grid a world
+    makes with :meth:`TileGrid.with_movers`), so a query costs the platforms that can be
+    near it, not every platform in the level; :meth:`near` tells the world which platforms
+    a body could meet this tick. A platform whose route leaves the map is kept apart and
+    tested by every query, since no cell holds the part of it out there.
     """
 
     grid: TileGrid
+    platforms: Sequence[Platform] = ()
     cells: dict[int, list[Platform]] = field(default_factory=dict)
     outside: list[Platform] = field(default_factory=list)
     # The block of map every filed route region lies in: a body outside it is near none.
@@ -179,8 +181,12 @@ class PlatformIndex:
     # this layer files anything in, so it need not look this layer up at all.
     cell_bounds: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
 
+    def __post_init__(self) -> None:
+        for platform in self.platforms:
+            self.file(platform)
+
     def file(self, platform: Platform) -> None:
-        """Put the platform in the cells of its route region (once, when the level starts)."""
+        """Put the platform in the cells of its route region."""
         grid = self.grid
         left, top, w, h = platform.region
         right, bottom = left + w, top + h
@@ -204,48 +210,51 @@ class PlatformIndex:
                             math.ceil(high_x / grid.tile_w) * grid.tile_w,
                             math.ceil(high_y / grid.tile_h) * grid.tile_h)
 
-    def add_near(self, box: Box, found: set[Platform]) -> None:
-        """Add to ``found`` the platforms whose route region shares a cell with the box (and
-        those off the map)."""
-        if self.outside:
-            found.update(self.outside)
-        x, y, w, h = box
+    def near(self, boxes: Iterable[Box]) -> set[Platform]:
+        """The platforms whose route region shares a cell with any of the boxes (and those
+        off the map, which any box may meet)."""
+        found: set[Platform] = set(self.outside)
+        if not self.cells:
+            return found
+        grid, cells = self.grid, self.cells
+        cols, rows, tile_w, tile_h = grid.cols, grid.rows, grid.tile_w, grid.tile_h
         low_x, low_y, high_x, high_y = self.bounds
-        if not (w > 0 and h > 0 and x <= high_x and low_x <= x + w and y <= high_y
-                and low_y <= y + h):
-            return
-        grid = self.grid
-        try:
-            first_col, last_col = math.floor(x / grid.tile_w), math.ceil((x + w) / grid.tile_w) - 1
-            first_row, last_row = math.floor(y / grid.tile_h), math.ceil((y + h) / grid.tile_h) - 1
-        except (ValueError, OverflowError):
-            return
-        cells, cols = self.cells, grid.cols
-        for row in range(max(0, first_row), min(grid.rows - 1, last_row) + 1):
-            for col in range(max(0, first_col), min(cols - 1, last_col) + 1):
-                filed = cells.get(row * cols + col)
-                if filed is not None:
-                    found.update(filed)
+        for x, y, w, h in boxes:
+            if not (w > 0 and h > 0 and x <= high_x and low_x <= x + w and y <= high_y
+                    and low_y <= y + h):
+                continue  # nowhere near any route (or NaN)
+            try:
+                first_col, last_col = floor(x / tile_w), ceil((x + w) / tile_w) - 1
+                first_row, last_row = floor(y / tile_h), ceil((y + h) / tile_h) - 1
+            except OverflowError:
+                continue
+            for row in range(max(0, first_row), min(rows - 1, last_row) + 1):
+                key = row * cols
+                for col in range(max(0, first_col), min(cols - 1, last_col) + 1):
+                    filed = cells.get(key + col)
+                    if filed is not None:
+                        found.update(filed)
+        return found
+
+    def platform_of(self, shape: TileShape | None) -> Platform | None:
+        """The platform a shape came from, if it is a platform's (``col == -1``, its number
+        as ``row``)."""
+        if shape is None or shape.col != -1:
+            return None
+        number = shape.row
+        platforms = self.platforms
+        if 0 <= number < len(platforms) and platforms[number].number == number:
+            return platforms[number]
+        return next((p for p in platforms if p.number == number), None)
 
 
-def _number(platform: Platform) -> int:
-    return platform.number
-
-
-@dataclass
-class SolidsWithPlatforms:
-    """The tile grid plus moving platforms, behind the one query the movement code makes."""
+@dataclass(frozen=True)
+class SolidsWithout:
+    """The world's solids less one platform: what that platform pushes and carries bodies
+    against while it moves (it must not stop them itself)."""
 
     grid: TileGrid
-    platforms: Sequence[Platform]
-    ignored: Platform | None = None  # the platform that is itself moving right now
-    index: PlatformIndex | None = None
-
-    def __post_init__(self) -> None:
-        if self.index is None:
-            self.index = PlatformIndex(self.grid)
-            for platform in self.platforms:
-                self.index.file(platform)
+    platform: Platform
 
     @property
     def width_px(self) -> int:
@@ -255,47 +264,6 @@ class SolidsWithPlatforms:
     def height_px(self) -> int:
         return self.grid.height_px
 
-    def add_near(self, box: Box, found: set[Platform]) -> None:
-        """Add to ``found`` the platforms a body in ``box`` could meet (see
-        :meth:`PlatformIndex.add_near`)."""
-        assert self.index is not None
-        self.index.add_near(box, found)
-
     def entries_in(self, left: float, top: float, right: float, bottom: float,
                    ) -> list[Entry]:
-        """The tile grid's entries in the region, then the platforms' (by number)."""
-        index = self.index
-        assert index is not None
-        low_x, low_y, high_x, high_y = index.cell_bounds
-        movers = (index.cells if left < high_x and low_x < right and top < high_y
-                  and low_y < bottom else None)  # None: no filed cell is visited
-        found = self.grid.entries_in(left, top, right, bottom, movers, self.ignored)
-        if index.outside and right > left and bottom > top:
-            tested = [p for p in index.outside if p is not self.ignored]
-            found.extend(p.entry for p in tested if _overlaps(p.entry, left, top, right, bottom))
-            self.grid.stats.shapes_tested += len(tested)
-            if self.grid.log is not None:
-                self.grid.log.add_extra(tuple(p.shape for p in tested))
-        return found
-
-    def shapes_in(self, region: Box) -> list[TileShape]:
-        x, y, w, h = region
-        return [entry[5] for entry in self.entries_in(x, y, x + w, y + h)]
-
-    def without(self, platform: Platform) -> SolidsWithPlatforms:
-        return SolidsWithPlatforms(self.grid, self.platforms, platform, self.index)
-
-
-    def platform_of(self, shape: TileShape | None) -> Platform | None:
-        """The platform a shape came from, if it is a platform's."""
-        if shape is None or shape.col != -1:
-            return None
-        number = shape.row
-        if 0 <= number < len(self.platforms) and self.platforms[number].number == number:
-            return self.platforms[number]
-        return next((p for p in self.platforms if p.number == number), None)
-
-
-def _overlaps(entry: Entry, left: float, top: float, right: float, bottom: float) -> bool:
-    return (entry[0] < right and left < entry[2] and entry[1] < bottom and top < entry[3]
-            and entry[2] > entry[0] and entry[3] > entry[1])
+        return self.grid.entries_in(left, top, right, bottom, self.platform)

@@ -59,10 +59,10 @@ def _attributes(thing: object) -> dict[str, Any]:
 
 def _changing_things(world: World) -> list[object]:
     """The world and every object of it whose attributes may change while it plays: its
-    camera, contact tracker and solids, every enemy (alive or not) and every sprite in any
+    camera and contact tracker, every enemy (alive or not) and every sprite in any
     of its groups."""
     things: dict[int, object] = {}
-    for thing in (world, world.camera, world.contacts, world.solids,
+    for thing in (world, world.camera, world.contacts,
                   *world.enemy_by_number.values(), *_groups(world)):
         things.setdefault(id(thing), thing)
     for group in _groups(world):

@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from enum import Enum
 from math import ceil, floor
 from typing import NamedTuple, Protocol
@@ -84,11 +84,31 @@ def _number(mover: Mover) -> int:
     return mover.number
 
 
+class MoverLayer(Protocol):
+    """Moving shapes filed by the cells they can reach, keyed like the tiles (the platforms'
+    :class:`game.sim.platforms.PlatformIndex` is one)."""
+
+    @property
+    def cells(self) -> Mapping[int, Sequence[Mover]]: ...
+
+    @property
+    def cell_bounds(self) -> tuple[float, float, float, float]:
+        """Left, top, right, bottom of whole cells holding every filed cell: a region
+        outside it visits none, so the layer need not be looked up."""
+        ...
+
+    @property
+    def outside(self) -> Sequence[Mover]:
+        """Movers that can leave the map, where no cell holds them: tested by every query."""
+        ...
+
+
 class Solids(Protocol):
     """What the movement code needs of the world's solids: a region query and the map size.
 
-    The tile grid is one; :class:`game.sim.platforms.SolidsWithPlatforms` adds moving
-    platforms.
+    The tile grid is one (with its moving platforms when a world has filed them,
+    :meth:`TileGrid.with_movers`); :class:`game.sim.platforms.SolidsWithout` leaves out
+    the platform that is itself moving.
     """
 
     @property
@@ -167,12 +187,18 @@ class TileGrid:
     log: QueryLog | None = None  # attached by whoever wants every query written down
     _cells: dict[int, list[Entry]] = field(default_factory=dict)
     _empty: list[tuple[int, TileShape]] = field(default_factory=list)
+    movers: MoverLayer | None = None  # a second layer of moving shapes (a world's platforms)
     width_px: int = field(init=False)   # the map's size in px, read by every x move
     height_px: int = field(init=False)
 
     def __post_init__(self) -> None:
         self.width_px = self.cols * self.tile_w
         self.height_px = self.rows * self.tile_h
+
+    def with_movers(self, layer: MoverLayer) -> TileGrid:
+        """The same tiles (shared, not copied) with a layer of moving shapes, and counts and
+        a log of its own: what a world queries while a level plays."""
+        return replace(self, stats=QueryStats(), log=None, movers=layer)
 
     def put(self, col: int, row: int, shape: TileShape) -> None:
         """Add a shape to cell ``(col, row)``; the shape must lie inside that cell.
@@ -216,16 +242,16 @@ class TileGrid:
                 yield col, row
 
     def entries_in(self, left: float, top: float, right: float, bottom: float,
-                   movers: Mapping[int, Sequence[Mover]] | None = None,
                    ignoring: Mover | None = None) -> list[Entry]:
         """The shapes that overlap the region (strictly), as entries, counting the work.
 
         The cells of :meth:`cells_covering` and the test of :meth:`Box.overlaps`, on the
         region's four edges: every body calls this several times a tick, so it takes floats,
-        makes no call per shape and updates the counts once. ``movers`` is a second layer
-        keyed like the tiles (moving platforms, filed by the cells they cover): the same
-        cells are looked up in it, each mover found is tested once, after the tiles and in
-        the order of their numbers, and ``ignoring`` is skipped.
+        makes no call per shape and updates the counts once. With a layer of
+        :attr:`movers` (moving platforms), the same cells are looked up in it too, when the
+        region reaches the layer's cells at all; each mover found is tested once, after the
+        tiles and in the order of their numbers (then those off the map), and ``ignoring``
+        is skipped.
         """
         if not (right > left and bottom > top):  # empty (or NaN): overlaps nothing
             return []
@@ -246,6 +272,12 @@ class TileGrid:
         log = self.log
         if log is not None:
             log.add(first_col, last_col, first_row, last_row)
+        layer = self.movers
+        filed: Mapping[int, Sequence[Mover]] | None = None
+        if layer is not None:
+            low_x, low_y, high_x, high_y = layer.cell_bounds
+            if left < high_x and low_x < right and top < high_y and low_y < bottom:
+                filed = layer.cells
         found: list[Entry] = []
         near: list[Mover] = []
         cells = self._cells
@@ -260,13 +292,15 @@ class TileGrid:
                         if (entry[0] < right and left < entry[2]
                                 and entry[1] < bottom and top < entry[3]):
                             found.append(entry)
-                if movers is not None:
-                    for mover in movers.get(key + col, ()):
+                if filed is not None:
+                    for mover in filed.get(key + col, ()):
                         if mover not in near and mover is not ignoring:
                             near.append(mover)
+        if near and len(near) > 1:
+            near.sort(key=_number)
+        if layer is not None and layer.outside:
+            near.extend(mover for mover in layer.outside if mover is not ignoring)
         if near:
-            if len(near) > 1:
-                near.sort(key=_number)
             tested += len(near)
             for mover in near:
                 entry = mover.entry

@@ -64,7 +64,7 @@ from game.sim.movement import (
     slide_past_ceiling_corner,
 )
 from game.sim.pickups import Checkpoint, Coin, Exit, Trigger
-from game.sim.platforms import Platform, SolidsWithPlatforms
+from game.sim.platforms import Platform, PlatformIndex, SolidsWithout
 from game.sim.player import Player
 from game.sim.tilegrid import QueryLog, TileKind
 from game.sim.tuning import Tuning
@@ -142,13 +142,15 @@ class World:
 
     def __post_init__(self) -> None:
         self.tuning = self.tuning.with_map_properties(self.level.properties)
-        self.grid = self.level.grid
-        self.map_w_px, self.map_h_px = self.grid.width_px, self.grid.height_px
         self.platforms: pygame.sprite.Group[Platform] = pygame.sprite.Group(
             Platform(spec, number) for number, spec in enumerate(self.level.platforms))
         self._platform_list = list(self.platforms)
-        self.solids = SolidsWithPlatforms(self.grid, self._platform_list)
-        self._solids_without = [self.solids.without(p) for p in self.platforms]
+        self.platform_index = PlatformIndex(self.level.grid, self._platform_list)
+        # The level's tiles with this world's platforms as a second layer: every query of
+        # the tick goes here, and its counts and log are this world's own.
+        self.grid = self.solids = self.level.grid.with_movers(self.platform_index)
+        self.map_w_px, self.map_h_px = self.grid.width_px, self.grid.height_px
+        self._solids_without = [SolidsWithout(self.grid, p) for p in self.platforms]
         self.checkpoints: pygame.sprite.Group[Checkpoint] = pygame.sprite.Group(
             Checkpoint(box) for box in self.level.checkpoints)
         self.checkpoint_reached: int | None = None
@@ -328,7 +330,7 @@ class World:
                                             through_one_way=body.dropping_through)
         body.on_ground = body.standing_on is not None
         body.riding = (None if body.standing_on is None or body.standing_on.col != -1
-                       else self.solids.platform_of(body.standing_on))
+                       else self.platform_index.platform_of(body.standing_on))
 
     def _player_contacts(self) -> set[tuple[ContactKey, ContactKey]]:
         """The pairs (player, thing) whose boxes the player's path overlapped this tick."""
@@ -370,12 +372,10 @@ class World:
     def _platforms_near(self, bodies: list[Body]) -> set[Platform]:
         """The platforms a body could meet this tick: those whose route region it touches,
         and those it rides."""
-        near: set[Platform] = set()
-        if self._platform_list:
-            for body in bodies:
-                self.solids.add_near(body.box, near)
-                if body.riding is not None:
-                    near.add(body.riding)
+        if not self._platform_list:
+            return set()
+        near = self.platform_index.near(body.box for body in bodies)
+        near.update(body.riding for body in bodies if body.riding is not None)
         return near
 
     def _move_platform(self, platform: Platform, to: tuple[float, float],
