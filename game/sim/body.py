@@ -50,6 +50,16 @@ class Body(BoxSprite):
     def react(self, x_move: Move, y_move: Move) -> None:
         """Respond to what this tick's two axis moves hit; subclasses decide how."""
 
+    def reach(self) -> tuple[float, float, float, float]:
+        """Left, top, right and bottom of all this tick's path covered (the box itself
+        when it made no move): a first, cheap test before :meth:`travelled_through`."""
+        paths = [move.path_edges for move in (self.last_x, self.last_y) if move is not None]
+        if not paths:
+            x, y, w, h = self.box
+            return (x, y, x + w, y + h)
+        lefts, tops, rights, bottoms = zip(*paths, strict=True)
+        return (min(lefts), min(tops), max(rights), max(bottoms))
+
     def travelled_through(self, region: Box) -> bool:
         """Did this tick's path (the x step, then the y step) overlap ``region``?
 

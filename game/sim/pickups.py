@@ -8,11 +8,22 @@ tracker, which reports when a touch starts.
 
 Each is a :class:`~game.sim.sprite.BoxSprite`: a coin spins, its picture centred on its box;
 an exit or checkpoint is a flag standing on the bottom of its box, greyed until reached.
+
+Triggers never move, so the tile cells they lie in are found once (:class:`TriggerCells`),
+and a tick tests the player's path against them only when that path reaches one of those
+cells: a broad phase as small as a set of cells. On most ticks it reaches none, and no
+trigger is tested at all.
+
+>>> cells = TriggerCells(16, 16)
+>>> cells.file(Box(40, 40, 8, 8))                  # one coin, in cell (2, 2)
+>>> cells.reached_by(0, 0, 30, 30), cells.reached_by(30, 30, 34, 34)
+(False, True)
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass, field
 
 import pygame
 
@@ -24,6 +35,49 @@ COIN_PHASE_COL_PX = 16  # neighbouring coins (by 16 px column) are one spin fram
 
 CHECKPOINT_WAITING_FRAME = 0  # a checkpoint's strip: greyed, then reached
 CHECKPOINT_REACHED_FRAME = 1
+
+
+@dataclass
+class TriggerCells:
+    """The tile cells that hold a trigger: where a path must reach for any to be tested.
+
+    A box is filed from the cell of its left (top) edge to the cell of its right (bottom)
+    edge, both by ``floor``, and a path is looked up the same way. The rule never decreases,
+    so a trigger and a path that overlap always share a cell, however the floats round (a
+    box whose edge lies on a border is filed one cell further than it reaches; the exact
+    test afterwards turns such a near miss away).
+    """
+
+    tile_w: int
+    tile_h: int
+    cells: set[tuple[int, int]] = field(default_factory=set)
+
+    def file(self, box: Box) -> None:
+        x, y, w, h = box
+        first_col, last_col = math.floor(x / self.tile_w), math.floor((x + w) / self.tile_w)
+        first_row, last_row = math.floor(y / self.tile_h), math.floor((y + h) / self.tile_h)
+        self.cells.update((col, row) for row in range(first_row, last_row + 1)
+                          for col in range(first_col, last_col + 1))
+
+    def reached_by(self, left: float, top: float, right: float, bottom: float) -> bool:
+        """Does the region reach a cell that holds a trigger?"""
+        cells = self.cells
+        if not cells:
+            return False
+        try:
+            first_col, last_col = math.floor(left / self.tile_w), math.floor(right / self.tile_w)
+            first_row, last_row = math.floor(top / self.tile_h), math.floor(bottom / self.tile_h)
+        except (ValueError, OverflowError):
+            return True  # a region with no cells to name: let the exact tests decide
+        if (last_col - first_col + 1) * (last_row - first_row + 1) > len(cells):
+            # A region bigger than all the filed cells: look at those instead.
+            return any(first_col <= col <= last_col and first_row <= row <= last_row
+                       for col, row in cells)
+        for row in range(first_row, last_row + 1):
+            for col in range(first_col, last_col + 1):
+                if (col, row) in cells:
+                    return True
+        return False
 
 
 class Trigger(BoxSprite):

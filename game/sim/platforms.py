@@ -173,15 +173,18 @@ class PlatformIndex:
 
     grid: TileGrid
     platforms: Sequence[Platform] = ()
-    cells: dict[int, list[Platform]] = field(default_factory=dict)
+    # Keyed like the tiles: a flat list, the platforms of cell (col, row) at row * cols + col.
+    cells: list[list[Platform] | None] = field(default_factory=list)
     outside: list[Platform] = field(default_factory=list)
     # The block of map every filed route region lies in: a body outside it is near none.
     bounds: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
     # The same block grown to whole cells: a query whose region misses it visits no cell
     # this layer files anything in, so it need not look this layer up at all.
-    cell_bounds: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
+    cell_bounds: tuple[float, float, float, float] = (math.inf, math.inf, -math.inf, -math.inf)
+    filed: int = 0   # how many platforms are in the cells (the rest are outside)
 
     def __post_init__(self) -> None:
+        self.cells = [None] * (self.grid.cols * self.grid.rows) if self.platforms else []
         for platform in self.platforms:
             self.file(platform)
 
@@ -193,7 +196,7 @@ class PlatformIndex:
         if not (left >= 0 and right <= grid.width_px and top >= 0 and bottom <= grid.height_px):
             self.outside.append(platform)
             return
-        if self.cells:
+        if self.filed:
             low_x, low_y, high_x, high_y = self.bounds
             self.bounds = (min(low_x, left), min(low_y, top), max(high_x, right),
                            max(high_y, bottom))
@@ -201,9 +204,17 @@ class PlatformIndex:
             self.bounds = (left, top, right, bottom)
         first_col, end_col = math.floor(left / grid.tile_w), math.ceil(right / grid.tile_w)
         first_row, end_row = math.floor(top / grid.tile_h), math.ceil(bottom / grid.tile_h)
+        if not self.cells:
+            self.cells = [None] * (grid.cols * grid.rows)
+        self.filed += 1
         for row in range(first_row, end_row):
             for col in range(first_col, end_col):
-                self.cells.setdefault(row * grid.cols + col, []).append(platform)
+                key = row * grid.cols + col
+                bucket = self.cells[key]
+                if bucket is None:
+                    self.cells[key] = [platform]
+                else:
+                    bucket.append(platform)
         low_x, low_y, high_x, high_y = self.bounds
         self.cell_bounds = (math.floor(low_x / grid.tile_w) * grid.tile_w,
                             math.floor(low_y / grid.tile_h) * grid.tile_h,
@@ -214,7 +225,7 @@ class PlatformIndex:
         """The platforms whose route region shares a cell with any of the boxes (and those
         off the map, which any box may meet)."""
         found: set[Platform] = set(self.outside)
-        if not self.cells:
+        if not self.filed:
             return found
         grid, cells = self.grid, self.cells
         cols, rows, tile_w, tile_h = grid.cols, grid.rows, grid.tile_w, grid.tile_h
@@ -231,7 +242,7 @@ class PlatformIndex:
             for row in range(max(0, first_row), min(rows - 1, last_row) + 1):
                 key = row * cols
                 for col in range(max(0, first_col), min(cols - 1, last_col) + 1):
-                    filed = cells.get(key + col)
+                    filed = cells[key + col]
                     if filed is not None:
                         found.update(filed)
         return found

@@ -33,7 +33,7 @@ What it teaches:
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field, replace
 from enum import Enum
 from math import ceil, floor
@@ -89,7 +89,9 @@ class MoverLayer(Protocol):
     :class:`game.sim.platforms.PlatformIndex` is one)."""
 
     @property
-    def cells(self) -> Mapping[int, Sequence[Mover]]: ...
+    def cells(self) -> Sequence[Sequence[Mover] | None]:
+        """The movers of cell ``(col, row)`` at ``row * cols + col``, as for the tiles."""
+        ...
 
     @property
     def cell_bounds(self) -> tuple[float, float, float, float]:
@@ -176,7 +178,9 @@ class QueryLog:
 class TileGrid:
     """Collision shapes bucketed by the tile cell they sit in.
 
-    Cells are keyed ``row * cols + col``; a cell with no shape has no bucket.
+    The buckets are one flat list, cell ``(col, row)`` at index ``row * cols + col``
+    (reading a list is quicker than a dict, and the loader bounds a map's size); a cell
+    with no shape holds None.
     """
 
     cols: int
@@ -185,7 +189,7 @@ class TileGrid:
     tile_h: int
     stats: QueryStats = field(default_factory=QueryStats)
     log: QueryLog | None = None  # attached by whoever wants every query written down
-    _cells: dict[int, list[Entry]] = field(default_factory=dict)
+    _cells: list[list[Entry] | None] | None = None   # made empty for the map's size
     _empty: list[tuple[int, TileShape]] = field(default_factory=list)
     movers: MoverLayer | None = None  # a second layer of moving shapes (a world's platforms)
     width_px: int = field(init=False)   # the map's size in px, read by every x move
@@ -194,6 +198,8 @@ class TileGrid:
     def __post_init__(self) -> None:
         self.width_px = self.cols * self.tile_w
         self.height_px = self.rows * self.tile_h
+        if self._cells is None:
+            self._cells = [None] * (self.cols * self.rows)
 
     def with_movers(self, layer: MoverLayer) -> TileGrid:
         """The same tiles (shared, not copied) with a layer of moving shapes, and counts and
@@ -209,15 +215,22 @@ class TileGrid:
             raise IndexError(f"cell ({col}, {row}) is outside a {self.cols}x{self.rows} map")
         key = row * self.cols + col
         if shape.box.w > 0 and shape.box.h > 0:
-            self._cells.setdefault(key, []).append(entry_of(shape))
+            assert self._cells is not None
+            bucket = self._cells[key]
+            if bucket is None:
+                self._cells[key] = [entry_of(shape)]
+            else:
+                bucket.append(entry_of(shape))
         else:
             self._empty.append((key, shape))
 
     def shapes(self) -> Iterator[TileShape]:
         """Every shape in the map (for drawing and for the brute-force comparisons)."""
-        for bucket in self._cells.values():
-            for entry in bucket:
-                yield entry[5]
+        assert self._cells is not None
+        for bucket in self._cells:
+            if bucket is not None:
+                for entry in bucket:
+                    yield entry[5]
         for _, shape in self._empty:
             yield shape
 
@@ -226,7 +239,8 @@ class TileGrid:
         if not (0 <= col < self.cols and 0 <= row < self.rows):
             return ()
         key = row * self.cols + col
-        return (*(entry[5] for entry in self._cells.get(key, ())),
+        assert self._cells is not None
+        return (*(entry[5] for entry in self._cells[key] or ()),
                 *(shape for k, shape in self._empty if k == key))
 
     def cells_covering(self, region: Box) -> Iterator[tuple[int, int]]:
@@ -273,7 +287,7 @@ class TileGrid:
         if log is not None:
             log.add(first_col, last_col, first_row, last_row)
         layer = self.movers
-        filed: Mapping[int, Sequence[Mover]] | None = None
+        filed: Sequence[Sequence[Mover] | None] | None = None
         if layer is not None:
             low_x, low_y, high_x, high_y = layer.cell_bounds
             if left < high_x and low_x < right and top < high_y and low_y < bottom:
@@ -281,11 +295,12 @@ class TileGrid:
         found: list[Entry] = []
         near: list[Mover] = []
         cells = self._cells
+        assert cells is not None
         tested = 0
         for row in range(first_row, last_row + 1):
             key = row * cols
             for col in range(first_col, last_col + 1):
-                bucket = cells.get(key + col)
+                bucket = cells[key + col]
                 if bucket is not None:
                     tested += len(bucket)
                     for entry in bucket:
@@ -293,9 +308,11 @@ class TileGrid:
                                 and entry[1] < bottom and top < entry[3]):
                             found.append(entry)
                 if filed is not None:
-                    for mover in filed.get(key + col, ()):
-                        if mover not in near and mover is not ignoring:
-                            near.append(mover)
+                    movers = filed[key + col]
+                    if movers is not None:
+                        for mover in movers:
+                            if mover not in near and mover is not ignoring:
+                                near.append(mover)
         if near and len(near) > 1:
             near.sort(key=_number)
         if layer is not None and layer.outside:

@@ -54,6 +54,7 @@ from game.sim.enemy import Enemy, EnemyKind, Squashed
 from game.sim.inputs import Actions
 from game.sim.level import Level
 from game.sim.movement import (
+    Edges,
     Move,
     Side,
     ground_under,
@@ -63,7 +64,7 @@ from game.sim.movement import (
     penetration_depth,
     slide_past_ceiling_corner,
 )
-from game.sim.pickups import Checkpoint, Coin, Exit, Trigger
+from game.sim.pickups import Checkpoint, Coin, Exit, Trigger, TriggerCells
 from game.sim.platforms import Platform, PlatformIndex, SolidsWithout
 from game.sim.player import Player
 from game.sim.tilegrid import QueryLog, TileKind
@@ -170,6 +171,9 @@ class World:
         self.exits: pygame.sprite.Group[Exit] = pygame.sprite.Group(
             Exit(box) for box in self.level.exits)
         self.enemy_by_number = dict(enumerate(self.enemies))
+        self.trigger_cells = TriggerCells(self.grid.tile_w, self.grid.tile_h)
+        for trigger in (*self.coins, *self.exits, *self.checkpoints):
+            self.trigger_cells.file(trigger.box)
         self.contacts: ContactTracker[ContactKey] = ContactTracker()
         self.stats = TickStats()
         self.max_penetration_px = 0.0
@@ -244,16 +248,20 @@ class World:
             assert body.last_x is not None and body.last_y is not None
             body.react(body.last_x, body.last_y)
 
-        # 6. Pickups: coins vanish from their group as they are collected.
-        for coins in pygame.sprite.groupcollide(
-                self.players, self.coins, False, True, collided=crossed).values():
-            events.extend(Event(EventKind.COIN, coin.value, coin.box) for coin in coins)
+        # 6. Pickups: coins vanish from their group as they are collected. Triggers are
+        #    only tested on a tick whose path reaches a cell that holds one.
+        reach = self.player.reach()
+        near_trigger = self.trigger_cells.reached_by(*reach)
+        if near_trigger:
+            for coins in pygame.sprite.groupcollide(
+                    self.players, self.coins, False, True, collided=crossed).values():
+                events.extend(Event(EventKind.COIN, coin.value, coin.box) for coin in coins)
 
         # 7. Contacts: what the player touches now. The tracker reports only what changed,
         #    so entering the exit is one event however long the player stands in it.
         if log is not None:
             log.purpose = "hazards"
-        touching_now = self._player_contacts()
+        touching_now = self._player_contacts(reach, near_trigger)
         changes = self.contacts.update(touching_now)
         entered = [key for pair in changes.started for key in pair]
         events.extend(Event(EventKind.EXIT) for kind, _ in entered if kind == "exit")
@@ -332,15 +340,26 @@ class World:
         body.riding = (None if body.standing_on is None or body.standing_on.col != -1
                        else self.platform_index.platform_of(body.standing_on))
 
-    def _player_contacts(self) -> set[tuple[ContactKey, ContactKey]]:
-        """The pairs (player, thing) whose boxes the player's path overlapped this tick."""
+    def _player_contacts(self, reach: Edges, near_trigger: bool,
+                         ) -> set[tuple[ContactKey, ContactKey]]:
+        """The pairs (player, thing) whose boxes the player's path overlapped this tick.
+
+        ``reach`` bounds the whole path: an enemy outside it is not tested further; exits
+        and checkpoints are tested only when the path is ``near_trigger``.
+        """
         player = self.player
-        pairs = {(PLAYER_KEY, ("exit", number)) for number, goal in enumerate(self.exits)
-                 if crossed(player, goal)}
-        pairs |= {(PLAYER_KEY, ("checkpoint", number))
-                  for number, flag in enumerate(self.checkpoints) if crossed(player, flag)}
-        pairs |= {(PLAYER_KEY, ("enemy", number)) for number, enemy in
-                  self.enemy_by_number.items() if enemy.alive() and crossed(player, enemy)}
+        pairs: set[tuple[ContactKey, ContactKey]] = set()
+        if near_trigger:
+            pairs |= {(PLAYER_KEY, ("exit", number)) for number, goal in enumerate(self.exits)
+                      if crossed(player, goal)}
+            pairs |= {(PLAYER_KEY, ("checkpoint", number))
+                      for number, flag in enumerate(self.checkpoints) if crossed(player, flag)}
+        left, top, right, bottom = reach
+        for number, enemy in self.enemy_by_number.items():
+            x, y, w, h = enemy.box
+            if (x < right and left < x + w and y < bottom and top < y + h and enemy.alive()
+                    and crossed(player, enemy)):
+                pairs.add((PLAYER_KEY, ("enemy", number)))
         cols, hazard = self.grid.cols, TileKind.HAZARD
         for move in (player.last_x, player.last_y):
             if move is not None:
