@@ -81,6 +81,8 @@ class ContactTracker(Generic[K]):
         """Take this tick's whole set of touching pairs; return the ones that changed."""
         self.tick += 1
         now = frozenset(pair_of(a, b) for a, b in touching)
+        if not now and not self.touching:  # nothing touched then or now: nothing changed
+            return ContactChanges(now, now)
         changes = ContactChanges(started=now - self.touching, ended=self.touching - now)
         self.touching = now
         for pair in sorted(changes.ended):  # endings first: a hand-over reads in order

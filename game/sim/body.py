@@ -53,12 +53,16 @@ class Body(BoxSprite):
     def reach(self) -> tuple[float, float, float, float]:
         """Left, top, right and bottom of all this tick's path covered (the box itself
         when it made no move): a first, cheap test before :meth:`travelled_through`."""
-        paths = [move.path_edges for move in (self.last_x, self.last_y) if move is not None]
-        if not paths:
-            x, y, w, h = self.box
-            return (x, y, x + w, y + h)
-        lefts, tops, rights, bottoms = zip(*paths, strict=True)
-        return (min(lefts), min(tops), max(rights), max(bottoms))
+        last_x, last_y = self.last_x, self.last_y
+        if last_x is None or last_y is None:
+            paths = [move.path_edges for move in (last_x, last_y) if move is not None]
+            if not paths:
+                x, y, w, h = self.box
+                return (x, y, x + w, y + h)
+            return paths[0]
+        left, top, right, bottom = last_x.path_edges
+        left_y, top_y, right_y, bottom_y = last_y.path_edges
+        return (min(left, left_y), min(top, top_y), max(right, right_y), max(bottom, bottom_y))
 
     def travelled_through(self, region: Box) -> bool:
         """Did this tick's path (the x step, then the y step) overlap ``region``?

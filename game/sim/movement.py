@@ -41,7 +41,7 @@ from game.sim.tilegrid import Solids, TileKind, TileShape
 
 GROUND_PROBE_PX = 1.0  # height of the strip under the feet that looks for ground
 INF = math.inf
-_new = tuple.__new__  # Box(...) minus the Python-level __new__ a NamedTuple calls
+_new = tuple.__new__  # Box(...) or Hit(...) minus the Python-level __new__ of a NamedTuple
 
 SOLID, ONE_WAY, HAZARD = TileKind.SOLID, TileKind.ONE_WAY, TileKind.HAZARD
 Edges = tuple[float, float, float, float]  # left, top, right, bottom
@@ -131,7 +131,7 @@ def move_x(grid: Solids, box: Box, dx: float) -> Move:
         for face, _, _, _, kind, shape in grid.entries_in(x, y, stop, y + h):
             if kind is SOLID and right <= face < stop:
                 stop, found = face, shape
-        hit = None if found is None else Hit(Side.RIGHT, stop, found)
+        hit = None if found is None else _new(Hit, (Side.RIGHT, stop, found))
         width = grid.width_px
         if right <= width < stop:
             stop, hit = width, Hit(Side.RIGHT, width, None)
@@ -140,7 +140,7 @@ def move_x(grid: Solids, box: Box, dx: float) -> Move:
     for _, _, face, _, kind, shape in grid.entries_in(stop, y, right, y + h):
         if kind is SOLID and stop < face <= x:
             stop, found = face, shape
-    hit = None if found is None else Hit(Side.LEFT, stop, found)
+    hit = None if found is None else _new(Hit, (Side.LEFT, stop, found))
     if stop < 0 <= x:
         stop, hit = 0, Hit(Side.LEFT, 0, None)
     return Move(_new(Box, (stop, y, w, h)), hit, box, dx)
@@ -166,13 +166,13 @@ def move_y(grid: Solids, box: Box, dy: float, *, through_one_way: bool = False) 
             if ((kind is SOLID or (kind is ONE_WAY and not through_one_way))
                     and bottom <= face < stop):
                 stop, found = face, shape
-        hit = None if found is None else Hit(Side.BOTTOM, stop, found)
+        hit = None if found is None else _new(Hit, (Side.BOTTOM, stop, found))
         return Move(_new(Box, (x, stop - h, w, h)), hit, box, 0.0, dy)
     stop = y + dy
     for _, _, _, face, kind, shape in grid.entries_in(x, stop, x + w, bottom):
         if kind is SOLID and stop < face <= y:
             stop, found = face, shape
-    hit = None if found is None else Hit(Side.TOP, stop, found)
+    hit = None if found is None else _new(Hit, (Side.TOP, stop, found))
     return Move(_new(Box, (x, stop, w, h)), hit, box, 0.0, dy)
 
 

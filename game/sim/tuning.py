@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
+from functools import cached_property
 from typing import Any
 
 TICK_HZ = 60
@@ -55,19 +56,19 @@ class Tuning:
     stomp_points: int = 5                  # score for each enemy stomped (a coin: its value)
     tick_s: float = TICK_S
 
-    @property
+    @cached_property
     def invulnerable_ticks(self) -> int:
         return round(self.invulnerable_time_s / self.tick_s)
 
-    @property
+    @cached_property
     def hopper_rest_ticks(self) -> int:
         return round(self.hopper_rest_s / self.tick_s)
 
-    @property
+    @cached_property
     def coyote_ticks(self) -> int:
         return round(self.coyote_time_s / self.tick_s)
 
-    @property
+    @cached_property
     def jump_buffer_ticks(self) -> int:
         return round(self.jump_buffer_s / self.tick_s)
 
