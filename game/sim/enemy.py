@@ -70,9 +70,20 @@ class Enemy(Body):
         self.rest_ticks_left = tuning.hopper_rest_ticks
 
     def _ground_ahead(self, grid: Solids) -> bool:
+        """Is there ground in the square just beyond the leading foot?
+
+        The shape the feet stand on answers first: when it reaches under that square, so
+        does ground, and nothing need be looked up (the answer the lookup would give).
+        """
         x, y, w, h = self.box
         front = x + w if self.direction > 0 else x - LEDGE_PROBE_PX
         feet = y + h
+        support = self.standing_on
+        if support is not None:
+            left, top, width, height = support.box
+            if (top == feet and width > 0 and height > 0 and left < front + LEDGE_PROBE_PX
+                    and front < left + width):
+                return True
         hazard = TileKind.HAZARD
         for entry in grid.entries_in(front, feet, front + LEDGE_PROBE_PX, feet + LEDGE_PROBE_PX):
             if entry[4] is not hazard:

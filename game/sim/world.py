@@ -209,8 +209,9 @@ class World:
         for enemy in self.enemies:
             enemy.decide(solids, self.tuning)
         bodies = self.bodies()
-        before = {body: body.box for body in bodies}
+        before: dict[Body, Box] = {}
         for body in bodies:
+            before[body] = body.box
             body.crushed = False
 
         # 2. Platforms: each moves along its path, pushing what is in its way and carrying
@@ -331,7 +332,8 @@ class World:
         it hit is the one the probe would find first. So the probe only runs when it did not.
         """
         landed = body.last_y.hit if body.last_y is not None else None
-        if landed is not None and landed.side is Side.BOTTOM and landed.face == body.box.bottom:
+        if (landed is not None and landed.side is Side.BOTTOM
+                and landed.face == body.box.y + body.box.h):
             body.standing_on = landed.shape
         else:
             body.standing_on = ground_under(self.solids, body.box,
