@@ -18,7 +18,7 @@ from game.collision.aabb import Box
 from game.sim.body import Body
 from game.sim.movement import Move
 from game.sim.sprite import BoxSprite, Strip, animation_index
-from game.sim.tilegrid import Solids, TileKind
+from game.sim.tilegrid import Solids, TileKind, TileShape
 from game.sim.tuning import Tuning
 
 LEDGE_PROBE_PX = 1.0  # size of the square looked at just beyond the leading foot
@@ -48,6 +48,7 @@ class Enemy(Body):
         self.direction = -1
         self.rest_ticks_left = 0
         self.phase = math.floor(box.x / WALK_PHASE_COL_PX)
+        self.ground_seen: TileShape | None = None  # a tile the ledge look-ahead last found
 
     def decide(self, grid: Solids, tuning: Tuning) -> None:
         """Turn at a ledge, then walk (or hop) on, and fall."""
@@ -72,21 +73,26 @@ class Enemy(Body):
     def _ground_ahead(self, grid: Solids) -> bool:
         """Is there ground in the square just beyond the leading foot?
 
-        The shape the feet stand on answers first: when it reaches under that square, so
-        does ground, and nothing need be looked up (the answer the lookup would give).
+        Two tiles answer first, without a lookup: the one the feet stand on, and the one the
+        last lookup found ahead. An enemy walks half a pixel a tick, so one of them still
+        reaches under the square on almost every tick, and when one does, the lookup would
+        say the same (a moving platform's shape is only used while it is stood on: it may
+        have moved on since it was seen).
         """
         x, y, w, h = self.box
         front = x + w if self.direction > 0 else x - LEDGE_PROBE_PX
         feet = y + h
-        support = self.standing_on
-        if support is not None:
-            left, top, width, height = support.box
-            if (top == feet and width > 0 and height > 0 and left < front + LEDGE_PROBE_PX
-                    and front < left + width):
-                return True
+        for known in (self.standing_on, self.ground_seen):
+            if known is not None:
+                left, top, width, height = known.box
+                if (left < front + LEDGE_PROBE_PX and front < left + width
+                        and top < feet + LEDGE_PROBE_PX and feet < top + height):
+                    return True
         hazard = TileKind.HAZARD
         for entry in grid.entries_in(front, feet, front + LEDGE_PROBE_PX, feet + LEDGE_PROBE_PX):
             if entry[4] is not hazard:
+                shape = entry[5]
+                self.ground_seen = shape if shape.col != -1 else None
                 return True
         return False
 

@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from enum import Enum
 from math import ceil, floor
 from typing import NamedTuple, Protocol
@@ -189,7 +189,7 @@ class TileGrid:
     tile_h: int
     stats: QueryStats = field(default_factory=QueryStats)
     log: QueryLog | None = None  # attached by whoever wants every query written down
-    _cells: list[list[Entry] | None] | None = None   # made empty for the map's size
+    _cells: list[list[Entry] | None] = field(init=False, repr=False)   # one slot a cell
     _empty: list[tuple[int, TileShape]] = field(default_factory=list)
     movers: MoverLayer | None = None  # a second layer of moving shapes (a world's platforms)
     width_px: int = field(init=False)   # the map's size in px, read by every x move
@@ -198,13 +198,14 @@ class TileGrid:
     def __post_init__(self) -> None:
         self.width_px = self.cols * self.tile_w
         self.height_px = self.rows * self.tile_h
-        if self._cells is None:
-            self._cells = [None] * (self.cols * self.rows)
+        self._cells = [None] * (self.cols * self.rows)
 
     def with_movers(self, layer: MoverLayer) -> TileGrid:
         """The same tiles (shared, not copied) with a layer of moving shapes, and counts and
         a log of its own: what a world queries while a level plays."""
-        return replace(self, stats=QueryStats(), log=None, movers=layer)
+        grid = TileGrid(self.cols, self.rows, self.tile_w, self.tile_h, movers=layer)
+        grid._cells, grid._empty = self._cells, self._empty
+        return grid
 
     def put(self, col: int, row: int, shape: TileShape) -> None:
         """Add a shape to cell ``(col, row)``; the shape must lie inside that cell.
@@ -215,7 +216,6 @@ class TileGrid:
             raise IndexError(f"cell ({col}, {row}) is outside a {self.cols}x{self.rows} map")
         key = row * self.cols + col
         if shape.box.w > 0 and shape.box.h > 0:
-            assert self._cells is not None
             bucket = self._cells[key]
             if bucket is None:
                 self._cells[key] = [entry_of(shape)]
@@ -226,7 +226,6 @@ class TileGrid:
 
     def shapes(self) -> Iterator[TileShape]:
         """Every shape in the map (for drawing and for the brute-force comparisons)."""
-        assert self._cells is not None
         for bucket in self._cells:
             if bucket is not None:
                 for entry in bucket:
@@ -239,7 +238,6 @@ class TileGrid:
         if not (0 <= col < self.cols and 0 <= row < self.rows):
             return ()
         key = row * self.cols + col
-        assert self._cells is not None
         return (*(entry[5] for entry in self._cells[key] or ()),
                 *(shape for k, shape in self._empty if k == key))
 
@@ -295,7 +293,6 @@ class TileGrid:
         found: list[Entry] = []
         near: list[Mover] = []
         cells = self._cells
-        assert cells is not None
         tested = 0
         for row in range(first_row, last_row + 1):
             key = row * cols

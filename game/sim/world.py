@@ -174,6 +174,10 @@ class World:
         self.trigger_cells = TriggerCells(self.grid.tile_w, self.grid.tile_h)
         for trigger in (*self.coins, *self.exits, *self.checkpoints):
             self.trigger_cells.file(trigger.box)
+        self.hazard_cells = TriggerCells(self.grid.tile_w, self.grid.tile_h)  # the spikes'
+        for shape in self.grid.shapes():
+            if shape.kind is TileKind.HAZARD:
+                self.hazard_cells.file(shape.box)
         self.contacts: ContactTracker[ContactKey] = ContactTracker()
         self.stats = TickStats()
         self.max_penetration_px = 0.0
@@ -346,8 +350,9 @@ class World:
                          ) -> set[tuple[ContactKey, ContactKey]]:
         """The pairs (player, thing) whose boxes the player's path overlapped this tick.
 
-        ``reach`` bounds the whole path: an enemy outside it is not tested further; exits
-        and checkpoints are tested only when the path is ``near_trigger``.
+        ``reach`` bounds the whole path: an enemy outside it is not tested further, and the
+        spikes are looked up only when it reaches a cell that holds one; exits and
+        checkpoints are tested only when the path is ``near_trigger``.
         """
         player = self.player
         pairs: set[tuple[ContactKey, ContactKey]] = set()
@@ -362,6 +367,8 @@ class World:
             if (x < right and left < x + w and y < bottom and top < y + h and enemy.alive()
                     and crossed(player, enemy)):
                 pairs.add((PLAYER_KEY, ("enemy", number)))
+        if not self.hazard_cells.reached_by(*reach):
+            return pairs  # no spike anywhere near the path
         cols, hazard = self.grid.cols, TileKind.HAZARD
         for move in (player.last_x, player.last_y):
             if move is not None:
