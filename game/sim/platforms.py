@@ -239,9 +239,17 @@ class PlatformIndex:
                 first_row, last_row = floor(y / tile_h), ceil((y + h) / tile_h) - 1
             except OverflowError:
                 continue
-            for row in range(max(0, first_row), min(rows - 1, last_row) + 1):
+            if first_col < 0:
+                first_col = 0
+            if last_col >= cols:
+                last_col = cols - 1
+            if first_row < 0:
+                first_row = 0
+            if last_row >= rows:
+                last_row = rows - 1
+            for row in range(first_row, last_row + 1):
                 key = row * cols
-                for col in range(max(0, first_col), min(cols - 1, last_col) + 1):
+                for col in range(first_col, last_col + 1):
                     filed = cells[key + col]
                     if filed is not None:
                         found.update(filed)

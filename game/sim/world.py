@@ -194,7 +194,7 @@ class World:
         events: list[Event] = []
         dt = self.tuning.tick_s
         solids = self.solids
-        self.grid.stats.reset()
+        self.grid.stats.reset()  # the lookups' counts, for this tick only
         # The query log, when asked for: each lookup below is written down under the
         # purpose last set here, so the overlay can show exactly what this tick tested.
         log = self.grid.log = self.query_log if self.measure.queries else None
@@ -202,8 +202,9 @@ class World:
             self.query_log.queries.clear()
         started = time.perf_counter()
 
-        for squash in self.squashed:  # a Group iterates over a copy: kill() inside is safe
-            squash.fade()
+        if self.squashed:
+            for squash in self.squashed:  # a Group iterates over a copy: kill() is safe
+                squash.fade()
 
         # 1. Intent: entities choose velocities; none of them moves itself.
         if log is not None:
@@ -269,7 +270,8 @@ class World:
         touching_now = self._player_contacts(reach, near_trigger)
         changes = self.contacts.update(touching_now)
         entered = [key for pair in changes.started for key in pair]
-        events.extend(Event(EventKind.EXIT) for kind, _ in entered if kind == "exit")
+        if entered:
+            events.extend(Event(EventKind.EXIT) for kind, _ in entered if kind == "exit")
         # A checkpoint counts the first time the player touches it or passes it (a jump
         # over the flag counts too): the respawn point moves there, and never back to an
         # earlier flag walked past again.
