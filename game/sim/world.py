@@ -16,7 +16,8 @@ comments in :meth:`World.step` and the README's tour name the same steps in the 
 4. **y pass**: every body moves along y the same way and is placed; the floor it landed on,
    or else the 1-pixel probe, sets ``on_ground``.
 5. **React**: bodies read what their moves hit (land, bump, turn round).
-6. **Pickups**: coins by ``groupcollide`` with ``dokill``, on the path the player travelled.
+6. **Pickups**: coins by ``groupcollide`` with ``dokill``, on the path the player travelled
+   (only on a tick when that path reaches a cell that holds a trigger).
 7. **Contacts**: the pairs the player touches; a tracker turns them into start/end events
    (entering the exit completes the level); a checkpoint touched or passed for the first
    time moves the respawn point there.
