@@ -375,23 +375,16 @@ def _replay(mover: Mover, moves: Sequence[Sample]) -> Callable[[], tuple[float, 
     """Replay the moves from each method's own form of the body's state, made before the
     clock starts where the method keeps one (the game's Box; Arcade's sprite and the
     tutorial's rect are set inside the move, as they must be from floats)."""
+    call: Callable[..., tuple[float, float]] = mover.move
+    calls: list[tuple[Any, ...]] = list(moves)
     if isinstance(mover, GameMover):
-        move_box = mover.move_box
-        starts = [(Box(s.x, s.y, s.w, s.h), s.dx, s.dy) for s in moves]
-
-        def run_game() -> tuple[float, int]:
-            started = clock()
-            for start in starts:
-                move_box(*start)
-            return clock() - started, len(starts)
-        return run_game
-    move = mover.move
+        call, calls = mover.move_box, [(Box(s.x, s.y, s.w, s.h), s.dx, s.dy) for s in moves]
 
     def run() -> tuple[float, int]:
         started = clock()
-        for s in moves:
-            move(*s)
-        return clock() - started, len(moves)
+        for arguments in calls:
+            call(*arguments)
+        return clock() - started, len(calls)
     return run
 
 
