@@ -173,7 +173,10 @@ def test_paused_music_resumes_rather_than_restarting() -> None:
     audio = Audio()
     try:
         audio.start_music()
-        time.sleep(0.1)  # the dummy driver plays in real time
+        waited_s = 0.0
+        while pygame.mixer.music.get_pos() <= 0 and waited_s < 5.0:
+            time.sleep(0.05)  # the dummy driver plays in real time: let some of it play
+            waited_s += 0.05
         audio.pause_music()
         assert not pygame.mixer.music.get_busy()
         played_ms = pygame.mixer.music.get_pos()
