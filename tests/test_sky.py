@@ -1,12 +1,20 @@
-"""The backdrop: one sun that stands still, and clouds and hills that scroll without a seam."""
+"""The title screen: one sun that stands still, clouds and hills that scroll without a seam,
+and the name of the level Play starts."""
 
 from __future__ import annotations
+
+import itertools
 
 import pygame
 import pytest
 
+from game.app import screens
 from game.app.assets import load_assets
+from game.app.hud import fit_text
+from game.app.menus import campaign_levels, level_entries
+from game.app.saves import Progress
 from game.app.screens import draw_title
+from game.levels import FIRST_LEVEL
 from game.tools import art
 
 
@@ -47,3 +55,26 @@ def test_the_scenery_joins_its_own_copy_without_a_step() -> None:
         here, there = skyline(x), skyline((x + 1) % width)
         assert here and there
         assert abs(here[-1] - there[-1]) <= 3, f"the hills jump between columns {x} and {x + 1}"
+
+
+def test_the_title_names_every_campaign_level_play_would_start_in_full(
+        screen: pygame.Surface, monkeypatch: pytest.MonkeyPatch) -> None:
+    assets = load_assets()
+    infos = campaign_levels(FIRST_LEVEL)
+    fitted: list[tuple[str, str]] = []
+
+    def recording_fit(font: pygame.font.Font, text: str, max_w: int) -> str:
+        fitted.append((text, fit_text(font, text, max_w)))
+        return fitted[-1][1]
+
+    monkeypatch.setattr(screens, "fit_text", recording_fit)
+    for number in range(len(infos)):
+        progress = Progress()
+        for done, following in itertools.pairwise(infos[:number + 1]):
+            # the earlier levels finished: Play starts at this one
+            progress.complete_level(done.path.name, ticks=600, coins=0,
+                                    next_level=following.path.name)
+        levels = level_entries(infos, progress)
+        draw_title(screen, assets, 0, 0, levels)
+        hint = f"Level {number + 1}: {infos[number].title}"
+        assert (hint, hint) in fitted, fitted[-1]

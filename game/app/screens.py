@@ -161,7 +161,7 @@ def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int
     """The title screen: drifting sky, the game's name, the menu, how to play, a running hero.
 
     ``frame`` counts at :data:`game.sim.sprite.ANIMATION_HZ` per second and drives the motion;
-    ``TITLE_ITEMS[selected]`` is lit, and a line under the menu says what it leads to. The
+    ``TITLE_ITEMS[selected]`` is lit, and a line under the panels says what it leads to. The
     controls shown are the gamepad's if ``pad`` (the last thing pressed was on a pad), else
     the keyboard's.
     """
@@ -196,10 +196,10 @@ def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int
     draw_menu(target, assets.font, TITLE_ITEMS, selected,
               (menu.left + PANEL_PAD_PX, menu.top + PANEL_PAD_PX), menu.w - 2 * PANEL_PAD_PX)
     hint = _title_hint(TITLE_ITEMS[selected], levels)
-    if hint:
-        font = assets.small_font
-        draw_text(target, font, fit_text(font, hint, menu.w + PANEL_GAP_PX),
-                  (menu.centerx, menu.bottom + LINE_GAP_PX), DIM_TEXT, anchor="midtop",
+    if hint:  # under both panels, where a level's whole title fits
+        font, pair = assets.small_font, menu.union(controls)
+        draw_text(target, font, fit_text(font, hint, pair.w),
+                  (pair.centerx, pair.bottom + LINE_GAP_PX), DIM_TEXT, anchor="midtop",
                   antialias=SMALL_TEXT_ANTIALIAS)
     _draw_controls(target, assets, controls, column)
     _draw_runners(target, assets, frame)
