@@ -82,15 +82,32 @@ def _unsolved(path: Path, seconds: float | None) -> tuple[str, bool] | None:
             "how far the search got", True)
 
 
-def _reach_summary(paths: list[Path]) -> str:
-    """The player's reach with the default tuning (levels may change it)."""
-    return "the player " + measure_reach(Tuning()).describe(TILE_PX)
+def _own_physics(path: Path) -> Tuning | None:
+    """The tuning a readable map plays with, when its physics properties change the
+    default (None when they do not, or the map cannot be read)."""
+    try:
+        tuning = Tuning().with_map_properties(load_level(path).properties)
+    except LevelError:
+        return None
+    return None if tuning == Tuning() else tuning
+
+
+def _reach_summary(own: list[tuple[Path, Tuning]]) -> str:
+    """The player's reach with the default physics, then on each map that sets its own."""
+    text = "the player " + measure_reach(Tuning()).describe(TILE_PX)
+    if own:
+        text = text.replace("the player", "with the default physics the player", 1)
+    for path, tuning in own:
+        text += f"; on {path.name}, with its own physics, it " + \
+            measure_reach(tuning).describe(TILE_PX)
+    return text
 
 
 def check(paths: list[Path], solve_seconds: float | None = DEFAULT_SOLVE_SECONDS) -> int:
     """Print what is wrong with each map; return the exit status. ``solve_seconds`` None:
     do not look for a route to the Exit."""
     checked = failures = 0
+    own: list[tuple[Path, Tuning]] = []  # the maps whose properties change the physics
     for argument in paths:
         for path, refusal in _maps(argument):
             checked += 1
@@ -113,10 +130,13 @@ def check(paths: list[Path], solve_seconds: float | None = DEFAULT_SOLVE_SECONDS
             for line in lines:
                 print(line)
             failures += failed
+            tuning = None if failed else _own_physics(path)
+            if tuning is not None:
+                own.append((path, tuning))
     verdict = "all playable" if not failures else f"{failures} not playable"
     solved = ", each solved from spawn to Exit" if solve_seconds is not None and not failures \
         else ""
-    print(f"checked {checked} map(s): {verdict}{solved}; {_reach_summary(paths)}")
+    print(f"checked {checked} map(s): {verdict}{solved}; {_reach_summary(own)}")
     return 1 if failures else 0
 
 
