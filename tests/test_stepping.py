@@ -13,6 +13,7 @@ import pygame
 import pytest
 
 from game.app.cli import parser
+from game.app.effects import Effects
 from game.app.run import Run
 from game.app.stepping import (
     FREEZE_KEY,
@@ -25,6 +26,7 @@ from game.app.stepping import (
 from game.app.window import play_in_window
 from game.sim.campaign import Campaign
 from game.sim.fixed_step import FixedStep
+from game.sim.tuning import TICK_S
 from tests.maps import level_from_ascii
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -92,6 +94,23 @@ def test_a_frozen_game_stands_still_on_screen_too(display: None,
     frozen = len(landing) + 1
     assert seen[frozen] > 0 and len(set(seen[frozen:])) == 1
     assert len({id(picture) for picture in pictures[frozen + 1:]}) == 1
+
+
+def test_effects_age_by_the_ticks_a_frame_runs_so_a_frozen_game_holds_them_too(
+        display: None, monkeypatch: pytest.MonkeyPatch) -> None:
+    aged: list[float] = []
+    advance = Effects.advance
+
+    def recording(effects: Effects, game_s: float) -> None:
+        aged.append(game_s)
+        advance(effects, game_s)
+
+    monkeypatch.setattr(Effects, "advance", recording)
+    seen = ticks_at_each_frame([[], [], [key(FREEZE_KEY)], [], [], [key(STEP_KEY)], []],
+                               monkeypatch)
+    runs = [b - a for a, b in itertools.pairwise(seen)]
+    assert aged == pytest.approx([ticks * TICK_S for ticks in runs])
+    assert aged[2:5] == [0.0, 0.0, 0.0] and aged[5] == pytest.approx(TICK_S)
 
 
 def test_quarter_speed_runs_a_quarter_of_the_ticks_and_f4_unfreezes() -> None:

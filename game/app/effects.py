@@ -18,8 +18,9 @@ What it teaches:
     dust to both sides; a stomp bursts the slime and shakes the screen; a coin pops.
   * **Squash and stretch keep the feet planted.** The picture is scaled, never the hitbox,
     and it is anchored bottom-centre on the box, so the hero squashes *onto* the floor.
-  * **Effects age in real seconds, the simulation in ticks.** A pause freezes both; the
-    window only advances effects while the game is being played.
+  * **Effects age in game time.** The window advances them by the ticks each frame runs
+    (seconds, not ticks, so their tunables read in seconds): a pause, a freeze of the
+    debug overlay's stepping or its quarter speed holds or slows them with the sprites.
 """
 
 from __future__ import annotations
@@ -168,20 +169,20 @@ class Effects:
 
     # -- Time ---------------------------------------------------------------------------
 
-    def advance(self, frame_s: float) -> None:
-        """Age everything by ``frame_s`` real seconds; drop what has run its course."""
+    def advance(self, game_s: float) -> None:
+        """Age everything by ``game_s`` seconds of game time; drop what has run its course."""
         for p in self.particles:
-            p.age_s += frame_s
+            p.age_s += game_s
             if p.gravity:
-                p.vy += GRAVITY_PX_S2 * frame_s
-            p.x += p.vx * frame_s
-            p.y += p.vy * frame_s
+                p.vy += GRAVITY_PX_S2 * game_s
+            p.x += p.vx * game_s
+            p.y += p.vy * game_s
         self.particles = [p for p in self.particles if p.age_s < p.life_s]
         for pop in self.pops:
-            pop.age_s += frame_s
+            pop.age_s += game_s
         self.pops = [pop for pop in self.pops if pop.age_s < COIN_POP_S]
-        self.squash_left_s = max(0.0, self.squash_left_s - frame_s)
-        self.shake_left_s = max(0.0, self.shake_left_s - frame_s)
+        self.squash_left_s = max(0.0, self.squash_left_s - game_s)
+        self.shake_left_s = max(0.0, self.shake_left_s - game_s)
 
     # -- Drawing ------------------------------------------------------------------------
 

@@ -212,8 +212,11 @@ def play_in_window(run: Run) -> int:
         # 2. Ticks: as many fixed 1/60 s steps as real time has paid for, each with what the
         # keyboard and the pads hold; each tick's events sound, and a finished level is saved.
         if menus.screen is Screen.PLAYING:
-            effects.advance(frame_s)  # effects age while playing, and stand still in menus
-            for _ in range(stepping.ticks_due(stepper, frame_s, overlay_on=debug)):
+            due = stepping.ticks_due(stepper, frame_s, overlay_on=debug)
+            # Effects age in game time, by the ticks this frame runs: they stand still in
+            # menus and while frozen (F2), and slow down at quarter speed (F4), as sprites do.
+            effects.advance(due * stepper.tick_s)
+            for _ in range(due):
                 attempt.before_tick(run.campaign)
                 finishing = run.campaign.world
                 try:
