@@ -3,10 +3,13 @@ layers that do not collide, and what the game still ignores gets a warning."""
 
 from __future__ import annotations
 
+import re
+import shutil
 from pathlib import Path
 
 import pygame
 import pytest
+import pytmx.util_pygame
 
 from game.app.render import LayerCache, animation_frame
 from game.levels import LEVELS_DIR, check_level, load_level
@@ -120,3 +123,48 @@ def test_an_animation_frame_the_tileset_lacks_is_an_error(tmp_path: Path) -> Non
     errors = [str(error) for error in check_level(path).errors]
     assert any("tile 1: its animation shows tile 40, which the tileset does not have" in e
                for e in errors), errors
+
+
+def mirrored_banner_level(tmp_path: Path) -> tuple[Path, int]:
+    """Hop Along with its first animated banner tile mirrored (Tiled's flip flag on its gid)."""
+    shutil.copytree(LEVELS_DIR.parent / "assets", tmp_path / "assets")
+    (tmp_path / "levels").mkdir()
+    text = HOP_ALONG.read_text(encoding="utf-8")
+    start = text.index('name="banners"')
+    head, data = text[start:].split('<data encoding="csv">', 1)
+    gid = next(int(n) for n in re.findall(r"\d+", data) if int(n))
+    data = re.sub(rf"\b{gid}\b", str(gid | 0x80000000), data, count=1)  # flipped across
+    path = tmp_path / "levels" / "mirrored.tmx"
+    path.write_text(text[:start] + head + '<data encoding="csv">' + data, encoding="utf-8")
+    return path, gid
+
+
+def test_a_mirrored_animated_tile_shows_mirrored_frames(tmp_path: Path) -> None:
+    path, banner = mirrored_banner_level(tmp_path)
+    pygame.display.init()
+    try:
+        pygame.display.set_mode((1, 1))
+        level = load_level(path, images=True)
+        tmx = pytmx.util_pygame.load_pygame(str(path))
+    finally:
+        pygame.display.quit()
+
+    def pictures(gid: int) -> list[bytes]:
+        return [pygame.image.tobytes(level.tile_images[frame], "RGBA")
+                for frame, _ in level.animations[gid]]
+
+    one, other = sorted(level.animations)   # the banner, plain and mirrored
+    for gid in (one, other):                # each starts on its own tile's picture
+        assert pictures(gid)[0] == pygame.image.tobytes(level.tile_images[gid], "RGBA")
+    assert pictures(other) == [
+        pygame.image.tobytes(pygame.transform.flip(level.tile_images[frame], True, False),
+                             "RGBA") for frame, _ in level.animations[one]]
+    # pytmx alone lists the plain frames for the mirrored tile: drawn as they are, the
+    # banner would flutter the wrong way round.
+    by_flip = {bool(flags.flipped_horizontally): gid for gid, flags in tmx.gidmap[banner]}
+    plain, mirrored = by_flip[False], by_flip[True]
+
+    def frames_by_pytmx(gid: int) -> list[int]:
+        return [frame.gid for frame in tmx.get_tile_properties_by_gid(gid)["frames"]]
+
+    assert frames_by_pytmx(mirrored) == frames_by_pytmx(plain)

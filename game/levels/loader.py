@@ -247,7 +247,7 @@ def _read(path: Path, findings: Findings, images: bool, check_images: bool,
         title=str(properties.get("title") or path.stem),
         next_level=path.parent / str(next_level) if next_level else None,
         properties=properties, layers=tuple(behind), foreground=tuple(in_front),
-        tile_images=pytmx_bridge.tile_images(tmx, [*behind, *in_front], animations)
+        tile_images=pytmx_bridge.tile_images(tmx, [*behind, *in_front])
         if images else {},
         animations=animations, background_color=header.background)
 

@@ -29,6 +29,7 @@ from pathlib import Path
 from typing import Any
 
 import pygame
+from pytmx.util_pygame import handle_transformation
 
 from game.levels.errors import Findings
 from game.levels.header import MapHeader
@@ -112,28 +113,69 @@ def drawn_layers(tmx: Any, layers: Sequence[LayerNode], colliding: Sequence[bool
             for layer, parsed, collides in zip(layers, tmx.layers, colliding, strict=True)]
 
 
-def animations(tmx: Any, layers: Sequence[TileLayer]) -> dict[int, Animation]:
-    """The animation of every animated tile id the layers use: (frame id, ms) per frame,
-    in pytmx's ids, like the layers'."""
+Frame = tuple[int, int, Any]  # a frame's id in pytmx, its time in ms, the turn to give it
+
+
+def _turned(flags: Any) -> bool:
+    return flags is not None and bool(flags.flipped_horizontally or flags.flipped_vertically
+                                      or flags.flipped_diagonally)
+
+
+def _animated(tmx: Any, layers: Sequence[TileLayer]) -> dict[int, tuple[Frame, ...]]:
+    """The frames of every animated tile id the layers use, in pytmx's ids.
+
+    pytmx gives a flipped or rotated tile an id of its own, with its image turned, but its
+    animation lists the plain frames: shown as they are, a mirrored torch would flicker the
+    wrong way round. So each frame of a turned tile carries the turn its tile has.
+    """
+    turn_of = {gid: flags for variants in tmx.gidmap.values() for gid, flags in variants}
     used = {gid for layer in layers for row in layer.gids for gid in row if gid}
-    found: dict[int, Animation] = {}
+    found: dict[int, tuple[Frame, ...]] = {}
     for gid in sorted(used):
         properties = tmx.get_tile_properties_by_gid(gid) or {}
-        frames = tuple((int(frame.gid), int(frame.duration))
+        turn = turn_of.get(gid) if _turned(turn_of.get(gid)) else None
+        frames = tuple((int(frame.gid), int(frame.duration), turn)
                        for frame in properties.get("frames", ()))
         if frames:
             found[gid] = frames
     return found
 
 
-def tile_images(tmx: Any, layers: Sequence[TileLayer],
-                frames: Mapping[int, Animation] | None = None) -> dict[int, pygame.Surface]:
-    """The image of every tile id the layers use, and of every frame of their animations."""
+def _turned_frame_ids(tmx: Any, animated: Mapping[int, tuple[Frame, ...]],
+                      ) -> dict[tuple[int, Any], int]:
+    """A new id, after all of pytmx's, for each frame that must be shown turned."""
+    ids: dict[tuple[int, Any], int] = {}
+    for frames in animated.values():
+        for frame_gid, _ms, turn in frames:
+            if turn is not None and (frame_gid, turn) not in ids:
+                ids[(frame_gid, turn)] = len(tmx.images) + len(ids)
+    return ids
+
+
+def animations(tmx: Any, layers: Sequence[TileLayer]) -> dict[int, Animation]:
+    """The animation of every animated tile id the layers use: (frame id, ms) per frame,
+    in pytmx's ids, like the layers' (a turned tile's frames under ids of their own)."""
+    animated = _animated(tmx, layers)
+    turned = _turned_frame_ids(tmx, animated)
+    return {gid: tuple((frame_gid if turn is None else turned[(frame_gid, turn)], ms)
+                       for frame_gid, ms, turn in frames)
+            for gid, frames in animated.items()}
+
+
+def tile_images(tmx: Any, layers: Sequence[TileLayer]) -> dict[int, pygame.Surface]:
+    """The image of every tile id the layers use, and of every frame of their animations
+    (turned as their tile is, under the ids :func:`animations` gives them)."""
+    animated = _animated(tmx, layers)
     used = {gid for layer in layers for row in layer.gids for gid in row if gid}
-    used |= {frame for animation in (frames or {}).values() for frame, _ in animation}
+    used |= {frame_gid for frames in animated.values() for frame_gid, _, turn in frames
+             if turn is None}
     images: dict[int, pygame.Surface] = {}
     for gid in used:
         image = tmx.images[gid] if gid < len(tmx.images) else None
         if isinstance(image, pygame.Surface):
             images[gid] = image
+    for (frame_gid, turn), new_id in _turned_frame_ids(tmx, animated).items():
+        image = tmx.images[frame_gid] if frame_gid < len(tmx.images) else None
+        if isinstance(image, pygame.Surface):
+            images[new_id] = handle_transformation(image, turn)
     return images
