@@ -14,6 +14,7 @@ import pytest
 
 from game.levels import LEVELS_DIR, load_level
 from game.levels.reach import measure_reach
+from game.levels.route_picture import PLATFORM, draw_route
 from game.levels.solver import Effort, replay, solve
 from game.sim.inputs import Action, InputScript
 from game.sim.snapshot import Snapshot
@@ -201,3 +202,16 @@ def test_check_only_warns_when_the_search_runs_out_of_time(tmp_path: Path) -> No
                             check=False, cwd=ROOT)
     assert result.returncode == 0, result.stdout + result.stderr
     assert "warning: no route to an Exit was found within 0.01 s" in result.stdout
+
+
+def test_the_route_picture_shows_each_moving_platform_and_its_route() -> None:
+    level = load_level(LEVELS_DIR / "04-moving-parts.tmx")
+    assert level.platforms
+    picture = draw_route(level, [], None)
+    for platform in level.platforms:
+        x, y = platform.path.points[0]
+        assert picture.get_at((round(x), round(y)))[:3] == PLATFORM[:3]   # its outline
+        (x0, y0), (x1, y1) = platform.path.points[:2]
+        middle = (round((x0 + x1) / 2 + platform.width_px / 2),
+                  round((y0 + y1) / 2 + platform.height_px / 2))
+        assert picture.get_at(middle)[:3] == PLATFORM[:3]                 # its route

@@ -2,8 +2,9 @@
 
 Where it sits: ``python -m game.levels solve MAP --picture PNG`` calls :func:`draw_route`
 with what :func:`game.levels.solver.solve` found. It draws the map's own tiles (the images
-of its tilesets), the spawn, the Exits, the path of the hitbox's centre tick by tick, and,
-when no route was found, a ring round the furthest place reached.
+of its tilesets), each moving platform where it starts with the line its route follows,
+the spawn, the Exits, the path of the hitbox's centre tick by tick, and, when no route was
+found, a ring round the furthest place reached.
 
 What it teaches: a picture made from the same data the game plays is the quickest way to
 see why a level can or cannot be finished; nothing here changes the level or the route.
@@ -24,6 +25,7 @@ ROUTE = pygame.Color(255, 255, 255)
 ROUTE_EDGE = pygame.Color(30, 30, 60)
 SPAWN = pygame.Color("#3a7bd5")  # the colours the Tiled project gives these classes
 EXIT = pygame.Color("#5cb85c")
+PLATFORM = pygame.Color("#e67e22")
 FURTHEST = pygame.Color("#d9534f")
 MAX_PICTURE_PX = 8192  # a bigger map is drawn at a fraction of its size
 
@@ -55,6 +57,13 @@ def draw_route(level: Level, route: Sequence[Box], furthest: Box | None) -> pyga
     picture.fill(pygame.Color(level.background_color) if level.background_color else SKY)
     for layer in (*level.layers, *level.foreground):
         _draw_layer(picture, layer, level)
+    for platform in level.platforms:
+        w, h = platform.width_px, platform.height_px
+        x, y = platform.path.points[0]
+        _outline(picture, Box(x, y, w, h), PLATFORM)
+        centres = [(px + w / 2, py + h / 2) for px, py in platform.path.points]
+        if len(centres) >= 2:
+            pygame.draw.lines(picture, PLATFORM, platform.path.loop, centres, 1)
     for goal in level.exits:
         _outline(picture, goal, EXIT)
     _outline(picture, level.spawn, SPAWN)
