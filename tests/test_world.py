@@ -403,3 +403,25 @@ def test_a_run_that_writes_a_report_measures_penetration_and_one_that_does_not_s
         args = parser().parse_args(["--headless", "--ticks", "2", *extra])
         assert runner.run(args, lambda _: 0) == runner.EXIT_OK
     assert [c.measure.penetration for c in made] == [False, True]
+
+
+@pytest.mark.parametrize("again", ["restart", "reload"])
+def test_a_restart_or_a_reload_takes_back_what_the_level_had_counted(again: str) -> None:
+    level = level_from_ascii([
+        "      ",
+        " P CC ",
+        "######",
+    ], spawn=Box(16, 18, 12, 14))
+    campaign = Campaign(Path("x.tmx"), replace(INSTANT, run_speed_px_s=60 * 40.0),
+                        loader=lambda _: level)
+    campaign.tick(RIGHT)             # both coins in one tick
+    assert (campaign.coins_collected, campaign.score, campaign.level_coins) == (2, 2, 2)
+    if again == "restart":
+        campaign.restart_level()
+    else:
+        campaign.reload(level)
+    assert len(campaign.world.coins) == 2          # back in play...
+    assert (campaign.coins_collected, campaign.score, campaign.level_coins) == (0, 0, 0)
+    campaign.restart_level()                      # from the spawn, over both again
+    campaign.tick(RIGHT)
+    assert campaign.coins_collected == 2          # ...and counted once, not twice

@@ -134,9 +134,11 @@ class Campaign:
         """Swap in a new version of the current level (``--watch``), keeping the run going.
 
         The player keeps its place and speed where the new map leaves that place free;
-        otherwise it starts again at the new spawn. Coins and enemies come from the new map.
+        otherwise it starts again at the new spawn. Coins and enemies come from the new map,
+        all of them, so what this level had counted so far is taken back.
         """
         old = self.world.player
+        self._take_back_level()
         self.world = World(level, self.tuning, measure=self.measure)
         player = self.world.player
         if (penetration_depth(self.world.solids, old.box) == 0.0
@@ -146,6 +148,16 @@ class Campaign:
             self.world.probe_ground(player)
 
     def restart_level(self) -> None:
-        """Start the current level again from its spawn (the pause menu's Restart)."""
+        """Start the current level again from its spawn (the pause menu's Restart), with its
+        coins and enemies all back, and what it had counted so far taken back."""
+        self._take_back_level()
         self.world = World(self.world.level, self.tuning, measure=self.measure)
         self._begin_level()
+
+    def _take_back_level(self) -> None:
+        """Take the current level's coins, stomps and points out of the run's totals (its
+        coins and enemies are about to be back in play, to be counted again)."""
+        self.coins_collected -= self.level_coins
+        self.enemies_stomped -= self.level_stomps
+        self.score -= self.level_score
+        self.level_coins = self.level_stomps = self.level_score = 0
