@@ -103,10 +103,23 @@ def test_a_squashed_picture_keeps_its_feet_on_the_box(screen: pygame.Surface) ->
 
 
 @pytest.mark.parametrize("shake_on", [True, False])
-def test_the_shake_moves_the_picture_only_when_turned_on(screen: pygame.Surface,
-                                                         shake_on: bool) -> None:
-    screen.fill((0, 0, 0))
-    screen.fill((255, 255, 255), (100, 100, 1, 1))
-    effects = Effects(shake_on=shake_on, shake_left_s=SHAKE_S)
-    effects.shake(screen)
-    assert (screen.get_at((100, 100)) == pygame.Color(255, 255, 255)) is not shake_on
+def test_the_shake_swings_the_world_under_a_still_sky_and_smears_nothing(
+        screen: pygame.Surface, monkeypatch: pytest.MonkeyPatch, shake_on: bool) -> None:
+    """A shaken frame is the world drawn again from a camera a few pixels off, every pixel
+    of it fresh: not the last frame scrolled, which leaves its edge behind."""
+    monkeypatch.setattr(WorldRenderer, "_draw_sky",
+                        lambda self, target, world: target.fill((0, 0, 0)))
+    campaign = Campaign(FIRST_LEVEL, loader=lambda p: load_level(p, images=True))
+    world = campaign.world
+    world.camera.x, world.camera.y = 200.0, 40.0
+    assets = load_assets()
+    shaking = WorldRenderer(assets)
+    shaking.effects = Effects(shake_on=shake_on, shake_left_s=SHAKE_S)
+    dx, dy = shaking.effects.shake_offset()
+    assert (dx, dy) != (0, 0) if shake_on else (dx, dy) == (0, 0)
+    screen.fill((255, 0, 255))        # what a scroll would leave behind at the edge
+    shaking.draw(screen, world, 0)
+    shaken = pygame.image.tobytes(screen, "RGB")
+    world.camera.x, world.camera.y = 200.0 - dx, 40.0 - dy
+    WorldRenderer(assets).draw(screen, world, 0)
+    assert shaken == pygame.image.tobytes(screen, "RGB")

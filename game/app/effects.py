@@ -2,9 +2,10 @@
 
 Where it sits: in the window, beside the renderer. After every tick the window hands the
 tick's events to :meth:`Effects.observe`; every frame it lets :meth:`Effects.advance` age
-what is on screen; the :class:`game.app.render.WorldRenderer` it is given to calls
-:meth:`Effects.dress` before it draws the sprites (squash and stretch), :meth:`Effects.draw`
-after them (particles), and :meth:`Effects.shake` last (the shake of a stomp).
+what is on screen; the :class:`game.app.render.WorldRenderer` it is given to draws the world
+:meth:`Effects.shake_offset` off the camera (the shake of a stomp), and calls
+:meth:`Effects.dress` before it draws the sprites (squash and stretch) and
+:meth:`Effects.draw` after them (particles).
 
 All of it is drawing only. Nothing here moves a box, changes a velocity or decides anything
 in the simulation: it reads the events a tick returned and the player's state, and it
@@ -236,9 +237,3 @@ class Effects:
         strength = SHAKE_PX * self.shake_left_s / SHAKE_S
         phase = 2 * math.pi * SHAKE_HZ * (SHAKE_S - self.shake_left_s)
         return round(strength * math.cos(phase)), round(strength * math.sin(2 * phase) / 2)
-
-    def shake(self, target: pygame.Surface) -> None:
-        """Shift what is drawn by the shake offset (the HUD, drawn after, stays still)."""
-        dx, dy = self.shake_offset()
-        if dx or dy:
-            target.scroll(dx, dy)

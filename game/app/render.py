@@ -14,8 +14,10 @@ A frame, in order (:meth:`WorldRenderer.draw`):
    layer order of :class:`Layer` (platforms, flags, coins, enemies, squashed, player).
 4. **Foreground tile layers**, cached the same way, so the player walks *behind* a bush.
 
-In the window, the :mod:`game.app.effects` it is given squash or stretch the player's picture
-before step 3, add their particles after it and shake the frame at the end.
+In the window, the :mod:`game.app.effects` it is given shake the view (steps 2 to 4 are
+drawn a few pixels off the camera, over the still sky, so nothing is smeared or left
+behind), squash or stretch the player's picture before step 3 and add their particles
+after it.
 
 What it teaches:
   * **World space to screen space** is one subtraction. The camera's position is floored
@@ -335,6 +337,9 @@ class WorldRenderer:
         if world is not self.world:
             self._begin(world)
         offset = screen_offset(world.camera)
+        if self.effects is not None:  # a stomp's shake: the world swings, the sky stays
+            shake_x, shake_y = self.effects.shake_offset()
+            offset = (offset[0] - shake_x, offset[1] - shake_y)
         # 1. Sky.
         self._draw_sky(target, world)
         # 2. Tile layers behind the sprites.
@@ -351,8 +356,6 @@ class WorldRenderer:
         # 4. Foreground tile layers.
         for cache in self.front:
             cache.draw(target, offset, frame)
-        if self.effects is not None:
-            self.effects.shake(target)
 
     def _begin(self, world: World) -> None:
         """A new world (a level started, restarted or reloaded): fresh group and caches."""
