@@ -209,6 +209,12 @@ def paint(
                 surface.set_at((px, py), color)
 
 
+def paint_standing(tile: pygame.Surface, rows: CharMap, colors: Mapping[str, RGB],
+                   x: int = 0) -> None:
+    """Paint a character map standing on the tile's bottom edge, ``x`` px from its left."""
+    paint(tile, rows, colors, x, TILE - len(rows))
+
+
 def sprite(rows: CharMap, colors: Mapping[str, RGB]) -> pygame.Surface:
     """Return a new surface exactly the size of a rectangular character map."""
     width = len(rows[0])
@@ -568,8 +574,7 @@ TUFT_MAP = (
 
 def draw_grass_tuft(tile: pygame.Surface) -> None:
     """Tile 12: a tuft of grass blades standing on the tile's bottom edge."""
-    colors = {"o": OUTLINE, "l": GRASS_LIGHT, "g": GRASS}
-    paint(tile, TUFT_MAP, colors, 0, TILE - len(TUFT_MAP))
+    paint_standing(tile, TUFT_MAP, {"o": OUTLINE, "l": GRASS_LIGHT, "g": GRASS})
 
 
 SIGN_MAP = (
@@ -623,8 +628,7 @@ ROCK_MAP = (
 
 def draw_rock(tile: pygame.Surface) -> None:
     """Tile 16: a grey boulder (decor)."""
-    colors = {"o": OUTLINE, "l": STONE_LIGHT, "m": STONE, "d": STONE_DARK}
-    paint(tile, ROCK_MAP, colors, 0, TILE - len(ROCK_MAP))
+    paint_standing(tile, ROCK_MAP, {"o": OUTLINE, "l": STONE_LIGHT, "m": STONE, "d": STONE_DARK})
 
 
 MUSHROOM_MAP = (
@@ -643,8 +647,8 @@ MUSHROOM_MAP = (
 
 def draw_mushroom(tile: pygame.Surface) -> None:
     """Tile 17: a red spotted mushroom (decor)."""
-    colors = {"o": OUTLINE, "r": RED, "R": RED_DARK, "w": WHITE, "c": CREAM, "v": PEBBLE}
-    paint(tile, MUSHROOM_MAP, colors, 1, TILE - len(MUSHROOM_MAP))
+    paint_standing(tile, MUSHROOM_MAP,
+                   {"o": OUTLINE, "r": RED, "R": RED_DARK, "w": WHITE, "c": CREAM, "v": PEBBLE}, 1)
 
 
 FENCE_MAP = (
@@ -667,8 +671,7 @@ FENCE_MAP = (
 
 def draw_fence(tile: pygame.Surface) -> None:
     """Tile 18: a wooden fence section that repeats horizontally (decor)."""
-    colors = {"o": OUTLINE, "l": WOOD_LIGHT, "w": WOOD, "d": WOOD_DARK}
-    paint(tile, FENCE_MAP, colors, 0, TILE - len(FENCE_MAP))
+    paint_standing(tile, FENCE_MAP, {"o": OUTLINE, "l": WOOD_LIGHT, "w": WOOD, "d": WOOD_DARK})
 
 
 PEBBLES_MAP = (
@@ -682,8 +685,8 @@ PEBBLES_MAP = (
 
 def draw_pebbles(tile: pygame.Surface) -> None:
     """Tile 20: a few small stones lying on the ground (decor)."""
-    colors = {"o": OUTLINE, "l": STONE_LIGHT, "m": STONE, "d": STONE_DARK}
-    paint(tile, PEBBLES_MAP, colors, 0, TILE - len(PEBBLES_MAP))
+    paint_standing(tile, PEBBLES_MAP,
+                   {"o": OUTLINE, "l": STONE_LIGHT, "m": STONE, "d": STONE_DARK})
 
 
 TALL_GRASS_MAP = (
@@ -702,8 +705,7 @@ TALL_GRASS_MAP = (
 
 def draw_tall_grass(tile: pygame.Surface) -> None:
     """Tile 21: tall grass blades (decor)."""
-    colors = {"o": OUTLINE, "l": GRASS_LIGHT, "g": GRASS}
-    paint(tile, TALL_GRASS_MAP, colors, 0, TILE - len(TALL_GRASS_MAP))
+    paint_standing(tile, TALL_GRASS_MAP, {"o": OUTLINE, "l": GRASS_LIGHT, "g": GRASS})
 
 
 TILE_PAINTERS: dict[int, Painter] = {
