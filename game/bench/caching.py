@@ -3,17 +3,16 @@
 Where it sits: the fifth result of ``python -m game.bench``, a table rather than a plot.
 
 What it teaches: people "cache" ``obj.rect`` with ``obj.rect.copy()`` or ``Rect(obj.rect)``
-to make collision code faster, or "safer". Reading ``obj.rect`` is one attribute lookup
-that hands back the same Rect object; a copy builds a new Rect every time, which costs more
-than the lookup it was meant to save, and a copy is stale the moment the sprite moves. Keep
-one exact position and derive the Rect from it in one place (:meth:`game.sim.body.Body.place`),
-then read ``obj.rect`` wherever you need it.
+to make collision code faster, or "safer". Reading a body's ``obj.rect`` hands back the Rect
+it last derived from its exact position (:attr:`game.sim.sprite.BoxSprite.rect`, worked out
+again only when the box or the picture has changed); a copy builds a new Rect on top of
+that, every time, and is stale the moment the sprite moves. Keep one exact position, derive
+the Rect from it in one place, and read ``obj.rect`` wherever you need it.
 
 Each form is timed in a loop over many bodies; the empty loop is timed too, so the table
 gives the raw cost, the cost net of the loop, and what a copy costs on top of the plain read,
 each a median of interleaved rounds with its 95 % interval. The last is a difference in ns,
-not a ratio: net of the loop the read costs a few ns, and dividing by a few ns divides by
-noise.
+not a ratio: what a copy adds is the question.
 """
 
 from __future__ import annotations

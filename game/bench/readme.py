@@ -164,14 +164,15 @@ def walls_text(rows: list[Row]) -> str:
 
 def caching_text(rows: list[Row]) -> str:
     return (
-        "**The caching myth** (`caching.png`, `caching.csv`). Reading `obj.rect` is an "
-        "attribute lookup that returns the same Rect; `obj.rect.copy()` and `Rect(obj.rect)` "
-        "build a new Rect every time. The loop over the bodies is timed alone too, so the "
-        "net column is the access itself, and the last column what a copy costs on top of "
-        "the read (a difference in ns: net of the loop the read costs so little that a ratio "
-        "to it would divide by noise). Copying is the expensive way to \"cache\" a rect, "
-        "and the copy is stale as soon as the body moves. Medians of interleaved rounds "
-        "[95 % intervals].\n\n" + caching.markdown(rows))
+        "**The caching myth** (`caching.png`, `caching.csv`). Reading a body's `obj.rect` "
+        "hands back the Rect it last derived from its float box (a property that works it "
+        "out again only when the box or the picture has changed); `obj.rect.copy()` and "
+        "`Rect(obj.rect)` build a new Rect on top of that, every time. The loop over the "
+        "bodies is timed alone too, so the net column is the access itself, and the last "
+        "column what a copy costs on top of the read (a difference in ns, not a ratio). "
+        "Copying is the expensive way to \"cache\" a rect, and the copy is stale as soon "
+        "as the body moves. Medians of interleaved rounds [95 % intervals].\n\n"
+        + caching.markdown(rows))
 
 
 def game_text(rows: list[Row]) -> str:
