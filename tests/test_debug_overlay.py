@@ -1,18 +1,33 @@
 """The debug overlay draws only the truth: the cells each lookup of the last tick visited and
-the shapes it tested, read from the tick's query log, and nothing else."""
+the shapes it tested, read from the tick's query log, and nothing else; and it paints exactly
+what the plain way of drawing it paints (:mod:`tests.overlay_reference`)."""
 
 from __future__ import annotations
 
-import pygame
+from collections.abc import Iterator
+from pathlib import Path
 
+import pygame
+import pytest
+
+from game.app import debug_overlay
 from game.app.assets import Assets
 from game.app.debug_overlay import Checked, draw_debug
-from game.app.render import screen_offset
+from game.app.hud import draw_hud
+from game.app.render import WorldRenderer, screen_offset
 from game.collision.aabb import Box
-from game.sim.inputs import NOTHING
+from game.levels import load_level
+from game.sim.campaign import Campaign, Outcome
+from game.sim.inputs import NOTHING, InputScript
 from game.sim.tuning import Tuning
 from game.sim.world import Measure, World
 from tests.maps import TILE, level_from_ascii
+from tests.overlay_reference import draw_debug_plainly
+
+ROOT = Path(__file__).resolve().parent.parent
+SCRIPTS = ROOT / "tests" / "scripts"
+EVERY_NTH_TICK = 3  # the ticks whose overlays are compared, to keep the test quick
+BIGGER_TARGET = (357, 203)  # wider and taller than the camera's view, by no whole cell
 
 FALL_PX_PER_TICK = 10 * TILE
 BLACK = pygame.Color(0, 0, 0)
@@ -100,3 +115,58 @@ def test_without_the_query_log_the_overlay_washes_no_cell(assets: Assets) -> Non
     world.step(NOTHING)
     assert world.query_log.queries == []
     assert Checked(world.grid, world.query_log).all_cells() == set()
+
+
+def frames_of(level: Path, assets: Assets) -> Iterator[tuple[pygame.Surface, World]]:
+    """Play ``level`` with the overlay's query log on, by its winning script if it has one
+    (standing still if not), and yield the picture under the overlay every few ticks."""
+    campaign = Campaign(level, loader=lambda path: load_level(path, images=True),
+                        measure=Measure(queries=True))
+    script_path = SCRIPTS / f"{level.stem}.txt"
+    script = InputScript.load(script_path) if script_path.exists() else None
+    renderer = WorldRenderer(assets)
+    while campaign.outcome is Outcome.RUNNING and campaign.world.level.path == level:
+        campaign.tick(script.held_at(campaign.ticks) if script else NOTHING)
+        if campaign.ticks % EVERY_NTH_TICK or campaign.world.level.path != level:
+            continue
+        if script is None and campaign.ticks > 600:
+            break
+        frame = pygame.Surface((320, 180))
+        renderer.draw(frame, campaign.world, campaign.ticks)
+        draw_hud(frame, campaign, assets)
+        yield frame, campaign.world
+
+
+def pixels(surface: pygame.Surface) -> bytes:
+    return pygame.image.tobytes(surface, "RGB")
+
+
+@pytest.mark.parametrize("level", ["levels/01-first-steps.tmx", "levels/04-moving-parts.tmx",
+                                   "levels/06-the-summit.tmx", "levels/showcase/fast-fall.tmx"])
+def test_the_overlay_paints_exactly_what_drawing_it_the_plain_way_paints(
+        assets: Assets, level: str) -> None:
+    compared = 0
+    for frame, world in frames_of(ROOT / level, assets):
+        if compared % 2:  # every other frame, on a target bigger than the camera's view
+            bigger = pygame.Surface(BIGGER_TARGET)
+            bigger.blit(frame, (0, 0))
+            frame = bigger
+        quick, plain = frame.copy(), frame.copy()
+        draw_debug(quick, world, assets, fps=60.0, update_ms=1.25)
+        draw_debug_plainly(plain, world, assets, fps=60.0, update_ms=1.25)
+        assert pixels(quick) == pixels(plain), (level, world.player.box)
+        compared += 1
+    assert compared > 100
+
+
+def test_a_frame_drawn_again_renders_no_panel_line_and_no_cell_squares_again(
+        assets: Assets) -> None:
+    world = World(level_from_ascii(FLOOR), measure=Measure(queries=True))
+    world.step(NOTHING)
+    overlay_alone(world, assets)
+    lines = debug_overlay._line_face.cache_info().misses
+    squares = debug_overlay._squares.cache_info()
+    overlay_alone(world, assets)
+    assert debug_overlay._line_face.cache_info().misses == lines
+    assert debug_overlay._squares.cache_info().misses == squares.misses
+    assert debug_overlay._squares.cache_info().hits > squares.hits  # the cells were stamped

@@ -24,12 +24,23 @@ What it teaches (read the colours):
     sweep); a red bar marks the face a sweep stopped at. Standing still, you still see a
     thin purple sweep hitting the floor every tick: gravity pulls, the floor stops it.
   * **The cost.** "N shapes in M cells" is what the whole tick's lookups did.
+
+How it stays cheaper than the frame under it (``python -m game.bench.drawing`` times both):
+  * **Draw only what can show.** The tick looks all over the map (every enemy moves and
+    looks ahead), but the screen shows a few cells of it: of each lookup in the log only
+    the cells in sight (:func:`cells_in_sight`) are walked, and sweeps, shapes and hitboxes
+    out of sight are passed over. The picture is the same as drawing everything
+    (``tests/overlay_reference.py`` does; the tests compare the two, pixel for pixel).
+  * **Draw repeated things once.** A cell's nested squares are one small picture for each
+    mix of lookups, drawn the first time it is met and then stamped in one blit per cell;
+    the panel's lines are rendered once and kept while they are shown; all the
+    translucent washes share one layer, blended in one blit.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from functools import lru_cache
 
 import pygame
@@ -39,8 +50,8 @@ from game.app.hud import HUD_BAR_H_PX, SMALL_TEXT_ANTIALIAS, Color
 from game.app.render import screen_offset
 from game.collision.aabb import Box
 from game.collision.contacts import Change, ContactEvent
-from game.sim.camera import Camera
-from game.sim.movement import Move, Side
+from game.sim.movement import Side
+from game.sim.sprite import BoxSprite
 from game.sim.tilegrid import QueryLog, TileGrid, TileKind, TileShape
 from game.sim.world import PLAYER_KEY, ContactKey, World
 
@@ -78,6 +89,8 @@ CELL_COLORS: dict[str, Color] = {
 }
 OTHER_CELL_COLOR: Color = (160, 160, 160)  # any other lookup (a checkpoint's spawn)
 CELL_SQUARE_STEP_PX = 2  # how much each square sits inside the one before
+SQUARES_KEY: Color = (1, 2, 3)  # the see-through colour around a cell's squares (none uses it)
+SQUARES_CACHE = 128  # mixes of lookups met in one cell, kept drawn
 
 PANEL_COLOR: Color = (0, 0, 0)
 PANEL_ALPHA = 160  # 0..255: how dark the panel's glass is
@@ -89,12 +102,34 @@ CONTACT_LINES = 3  # the last few contact starts and ends, from the world's trac
 TEXT_CACHE_LINES = 128  # rendered panel lines (and backings) kept for the next frames
 
 
-def _screen_rect(box: Box, camera: Camera) -> pygame.Rect:
-    """The box's whole pixels through the camera, as the tiles and sprites are drawn (the
-    arithmetic of :meth:`Box.to_rect`, moved by the camera's whole-pixel offset)."""
-    return pygame.Rect(math.floor(box.x) - math.floor(camera.x),
-                       math.floor(box.y) - math.floor(camera.y),
-                       math.ceil(box.w), math.ceil(box.h))
+CellBlock = tuple[int, int, int, int]  # first_col, last_col, first_row, last_row (inclusive)
+
+
+def _screen_rect(box: Box, dx: int, dy: int) -> pygame.Rect:
+    """The box's whole pixels moved by the frame's offset (:func:`screen_offset`), as the
+    tiles and sprites are drawn (the arithmetic of :meth:`Box.to_rect`)."""
+    x, y, w, h = box
+    return pygame.Rect(math.floor(x) - dx, math.floor(y) - dy, math.ceil(w), math.ceil(h))
+
+
+def cells_in_sight(grid: TileGrid, clip: pygame.Rect, offset: tuple[int, int]) -> CellBlock:
+    """The block of cells with a pixel inside ``clip`` (screen pixels) this frame: whatever
+    the overlay would draw for a cell outside it falls outside the picture.
+
+    >>> cells_in_sight(TileGrid(cols=99, rows=99, tile_w=16, tile_h=16),
+    ...                pygame.Rect(0, 0, 320, 180), (8, 0))
+    (0, 20, 0, 11)
+    """
+    left, top = clip.left + offset[0], clip.top + offset[1]  # map pixels
+    return (left // grid.tile_w, (left + clip.w - 1) // grid.tile_w,
+            top // grid.tile_h, (top + clip.h - 1) // grid.tile_h)
+
+
+def _fill(target: pygame.Surface, color: Color, rect: pygame.Rect) -> None:
+    """``target.fill`` of the part of ``rect`` inside the target's clip. pygame 2.6 moves a
+    rect that starts left of or above the surface to its edge instead of cutting it, so a
+    fill is cut here first."""
+    target.fill(color, rect.clip(target.get_clip()))
 
 
 class Wash:
@@ -106,33 +141,43 @@ class Wash:
 
     def fill(self, color: Color, rect: pygame.Rect) -> None:
         """Cover ``rect`` with ``color`` (RGBA); a later fill replaces an earlier one."""
-        self.fills.append((color, pygame.Rect(rect)))
+        self.fills.append((color, rect))
 
     def blend_onto(self, target: pygame.Surface) -> None:
         if not self.fills:
             return
         rects = [rect for _, rect in self.fills]
-        area = rects[0].unionall(rects[1:]).clip(target.get_rect())
+        area = rects[0].unionall(rects[1:]).clip(target.get_clip())
         if not area.w or not area.h:
             return
         layer = pygame.Surface(area.size, pygame.SRCALPHA)
-        for color, rect in self.fills:
-            layer.fill(color, rect.move(-area.x, -area.y))
+        for color, rect in self.fills:  # cut to the layer first: see :func:`_fill`
+            layer.fill(color, rect.clip(area).move(-area.x, -area.y))
         target.blit(layer, area.topleft)
 
 
 class Checked:
     """What the last tick's lookups tested, read from its query log: the cells each kind of
-    lookup visited, and every shape tested (the tiles in those cells, the platforms beside)."""
+    lookup visited, and every shape tested (the tiles in those cells, the platforms beside).
 
-    def __init__(self, grid: TileGrid, log: QueryLog) -> None:
+    ``within`` keeps only the cells of one block (and the tiles in them), by default the
+    whole map: for drawing, the ones in sight. Moving shapes tested beside the tiles are
+    kept wherever they are.
+    """
+
+    def __init__(self, grid: TileGrid, log: QueryLog, within: CellBlock | None = None) -> None:
         self.cells: dict[str, set[tuple[int, int]]] = {}
         self.shapes: dict[TileShape, None] = {}  # in the order first tested, each once
         seen: set[tuple[int, int]] = set()  # a cell's shapes are gathered on its first visit
-        for query in log.queries:
-            visited = self.cells.setdefault(query.purpose, set())
-            cols = range(query.first_col, query.last_col + 1)
-            for row in range(query.first_row, query.last_row + 1):
+        left, right, top, bottom = within or (0, grid.cols - 1, 0, grid.rows - 1)
+        for purpose, first_col, last_col, first_row, last_row, extra in log.queries:
+            visited = self.cells.setdefault(purpose, set())
+            if first_col <= right and last_col >= left and first_row <= bottom and last_row >= top:
+                cols = range(max(first_col, left), min(last_col, right) + 1)
+                rows = range(max(first_row, top), min(last_row, bottom) + 1)
+            else:  # nothing of it inside the block
+                cols = rows = range(0)
+            for row in rows:
                 for col in cols:
                     visited.add((col, row))
                     if (col, row) in seen:
@@ -141,7 +186,7 @@ class Checked:
                     for shape in grid.shapes_at(col, row):
                         if shape.box.w > 0 and shape.box.h > 0:  # lookups skip empty shapes
                             self.shapes.setdefault(shape)
-            for shape in query.extra:
+            for shape in extra:
                 self.shapes.setdefault(shape)
 
     def all_cells(self) -> set[tuple[int, int]]:
@@ -149,77 +194,105 @@ class Checked:
 
 
 Outline = tuple[Color, pygame.Rect]
+Stamp = tuple[pygame.Surface, tuple[int, int]]  # a picture and where its top left goes
 
 
-def _draw_tested(wash: Wash, world: World) -> tuple[list[Outline], list[Outline]]:
-    """Wash every cell the last tick's lookups visited; return a square for each such cell
-    and the outline of every shape they tested (read-only: cells are read through
-    ``shapes_at``, never ``entries_in``)."""
-    grid, camera = world.grid, world.camera
-    tested = Checked(grid, world.query_log)
-    dx, dy = screen_offset(camera)
+def _draw_tested(wash: Wash, world: World, clip: pygame.Rect,
+                 offset: tuple[int, int]) -> tuple[list[Stamp], list[Outline]]:
+    """Wash every cell in sight that the last tick's lookups visited; return the squares
+    to stamp in each such cell and the outline of every shape they tested (read-only: cells
+    are read through ``shapes_at``, never ``entries_in``)."""
+    grid = world.grid
+    tested = Checked(grid, world.query_log, within=cells_in_sight(grid, clip, offset))
+    dx, dy = offset
     tile_w, tile_h = grid.tile_w, grid.tile_h
-    squares: list[Outline] = []
-    order = [*CELL_COLORS, *(p for p in tested.cells if p not in CELL_COLORS)]
-    inset: dict[tuple[int, int], int] = {}
-    for purpose in order:
+    colors_at: dict[tuple[int, int], list[Color]] = {}  # each cell's squares, outermost first
+    for purpose in [*CELL_COLORS, *(p for p in tested.cells if p not in CELL_COLORS)]:
         color = CELL_COLORS.get(purpose, OTHER_CELL_COLOR)
-        for col, row in tested.cells.get(purpose, ()):  # squares of two cells never overlap
-            cell = pygame.Rect(col * tile_w - dx, row * tile_h - dy, tile_w, tile_h)
-            if (col, row) not in inset:
-                wash.fill(CELL_WASH, cell)
-            step = inset[col, row] = inset.get((col, row), 0) + CELL_SQUARE_STEP_PX
-            square = cell.inflate(-step, -step)
-            if square.w > 0 and square.h > 0:
-                squares.append((color, square))
+        for cell in tested.cells.get(purpose, ()):
+            colors_at.setdefault(cell, []).append(color)
+    stamps: list[Stamp] = []
+    for (col, row), colors in colors_at.items():
+        corner = col * tile_w - dx, row * tile_h - dy
+        wash.fill(CELL_WASH, pygame.Rect(corner, (tile_w, tile_h)))
+        stamps.append((_squares(tile_w, tile_h, tuple(colors)), corner))
     outlines: list[Outline] = []
     for shape in tested.shapes:
+        rect = _screen_rect(shape.box, dx, dy)
+        if not clip.colliderect(rect):
+            continue  # a platform tested out of sight
         color = PLATFORM_COLOR if shape.col == -1 else SHAPE_COLORS[shape.kind]
-        rect = _screen_rect(shape.box, camera)
         wash.fill((*color[:3], SHAPE_FILL_ALPHA), rect)
         outlines.append((color, rect))
-    return squares, outlines
+    return stamps, outlines
 
 
-def _draw_sweep(wash: Wash, move: Move | None, color: Color,
-                camera: Camera) -> pygame.Rect | None:
-    """Wash the region one axis move swept; return the bar marking the face it hit, if any."""
-    if move is None:
-        return None
-    swept = move.swept
-    if not swept.is_finite():
-        return None
-    wash.fill(color, _screen_rect(swept, camera))
-    hit = move.hit
-    if hit is None:
-        return None
-    box = move.box
-    if hit.side in (Side.LEFT, Side.RIGHT):
-        dx, dy = screen_offset(camera)
-        left = math.floor(hit.face) - dx - HIT_MARK_PX // 2
-        top = math.floor(box.top) - dy
-        bar = pygame.Rect(left, top, HIT_MARK_PX, math.ceil(box.h))
-    else:
-        dx, dy = screen_offset(camera)
-        left = math.floor(box.left) - dx
-        top = math.floor(hit.face) - dy - HIT_MARK_PX // 2
-        bar = pygame.Rect(left, top, math.ceil(box.w), HIT_MARK_PX)
-    return bar
+@lru_cache(maxsize=SQUARES_CACHE)
+def _squares(tile_w: int, tile_h: int, colors: tuple[Color, ...]) -> pygame.Surface:
+    """A cell's nested squares, one per colour, each :data:`CELL_SQUARE_STEP_PX` inside the
+    one before, on a see-through colour key: drawn once for each mix of lookups, then one
+    blit per cell."""
+    stamp = pygame.Surface((tile_w, tile_h))
+    stamp.fill(SQUARES_KEY)
+    stamp.set_colorkey(SQUARES_KEY)
+    cell = stamp.get_rect()
+    for ring, color in enumerate(colors, start=1):
+        square = cell.inflate(-ring * CELL_SQUARE_STEP_PX, -ring * CELL_SQUARE_STEP_PX)
+        if square.w > 0 and square.h > 0:
+            pygame.draw.rect(stamp, color, square, 1)
+    return stamp
 
 
-def _draw_outlines(target: pygame.Surface, world: World) -> None:
-    camera = world.camera
-    for goal in world.exits:
-        pygame.draw.rect(target, EXIT_COLOR, _screen_rect(goal.box, camera), width=1)
-    for coin in world.coins:
-        pygame.draw.rect(target, COIN_COLOR, _screen_rect(coin.box, camera), width=1)
-    for enemy in world.enemies:
-        pygame.draw.rect(target, ENEMY_COLOR, _screen_rect(enemy.box, camera), width=1)
-    for platform in world.platforms:
-        pygame.draw.rect(target, PLATFORM_COLOR, _screen_rect(platform.box, camera), width=1)
-    for flag in world.checkpoints:
-        pygame.draw.rect(target, EXIT_COLOR, _screen_rect(flag.box, camera), width=1)
-    pygame.draw.rect(target, PLAYER_COLOR, _screen_rect(world.player.box, camera), width=1)
+def _draw_sweeps(wash: Wash, world: World, clip: pygame.Rect,
+                 offset: tuple[int, int]) -> list[pygame.Rect]:
+    """Wash the region each body's x and y moves swept; return the bars marking the faces
+    they hit. Only what falls in ``clip`` is kept: most bodies are out of sight."""
+    dx, dy = offset
+    bars: list[pygame.Rect] = []
+    for body in world.bodies():
+        for move, color in ((body.last_x, SWEEP_X_COLOR), (body.last_y, SWEEP_Y_COLOR)):
+            if move is None:
+                continue
+            swept = move.swept
+            if not math.isfinite(sum(swept)):  # a NaN or an infinity makes the sum one
+                continue
+            region = _screen_rect(swept, dx, dy)
+            if clip.colliderect(region):
+                wash.fill(color, region)
+            hit = move.hit
+            if hit is not None:
+                bar = _hit_bar(move.box, hit.side, hit.face, dx, dy)
+                if clip.colliderect(bar.inflate(2 * HIT_EDGE_PX, 2 * HIT_EDGE_PX)):
+                    bars.append(bar)
+    return bars
+
+
+def _hit_bar(box: Box, side: Side, face: float, dx: int, dy: int) -> pygame.Rect:
+    """The bar straddling the face a move stopped at, as long as the body's side."""
+    if side in (Side.LEFT, Side.RIGHT):
+        return pygame.Rect(math.floor(face) - dx - HIT_MARK_PX // 2, math.floor(box.top) - dy,
+                           HIT_MARK_PX, math.ceil(box.h))
+    return pygame.Rect(math.floor(box.left) - dx, math.floor(face) - dy - HIT_MARK_PX // 2,
+                       math.ceil(box.w), HIT_MARK_PX)
+
+
+def _draw_hitboxes(target: pygame.Surface, world: World, clip: pygame.Rect,
+                   offset: tuple[int, int]) -> None:
+    """The 1 px outline of every hitbox in sight, the player's last (on top)."""
+    dx, dy = offset
+    left, top = clip.left + dx, clip.top + dy  # the clip, in map pixels
+    right, bottom = left + clip.w, top + clip.h
+    kinds: tuple[tuple[Color, Iterable[BoxSprite]], ...] = (
+        (EXIT_COLOR, world.exits), (COIN_COLOR, world.coins), (ENEMY_COLOR, world.enemies),
+        (PLATFORM_COLOR, world.platforms), (EXIT_COLOR, world.checkpoints),
+        (PLAYER_COLOR, (world.player,)))
+    for color, things in kinds:
+        for thing in things:
+            x, y, w, h = box = thing.box
+            # Drawn, it spans floor(x) to floor(x) + ceil(w), short of x + w + 1: so a box
+            # that ends that far left of the clip (or above it) leaves no pixel in it.
+            if x < right and y < bottom and x + w + 1 > left and y + h + 1 > top:
+                pygame.draw.rect(target, color, _screen_rect(box, dx, dy), 1)
 
 
 def _contact_line(event: ContactEvent[ContactKey]) -> str:
@@ -229,12 +302,13 @@ def _contact_line(event: ContactEvent[ContactKey]) -> str:
     return f"tick {event.tick} {sign}{other[0]} {other[1]}"
 
 
-def _draw_panel(target: pygame.Surface, world: World, assets: Assets, fps: float | None,
-                update_ms: float, extra_lines: Sequence[str] = ()) -> None:
+def panel_lines(world: World, fps: float | None, update_ms: float,
+                extra_lines: Sequence[str] = ()) -> tuple[str, ...]:
+    """What the panel says, line by line (the arguments are :func:`draw_debug`'s)."""
     player, stats = world.player, world.stats
     ground = "ground" if player.on_ground else "air"
     frames = "no window" if fps is None else f"FPS {fps:4.1f}"  # a picture has no frame rate
-    lines = (
+    return (
         f"{frames}  tick {update_ms:4.2f} ms",
         f"collide {stats.collision_s * MS_PER_S:4.2f} ms",
         f"{stats.shapes_tested} shapes in {stats.cells_visited} cells",
@@ -247,17 +321,19 @@ def _draw_panel(target: pygame.Surface, world: World, assets: Assets, fps: float
         *(_contact_line(event) for event in list(world.contacts.log)[-CONTACT_LINES:]),
         *extra_lines,
     )
-    font = assets.small_font
+
+
+def _draw_panel(target: pygame.Surface, lines: Sequence[str], font: pygame.font.Font) -> None:
+    """The lines on dark glass below the HUD bar: the backing and every line in one call."""
     line_h = font.get_linesize()
     faces = [_line_face(font, line) for line in lines]
     width = max(face.get_width() for face in faces) + 2 * PANEL_PAD_PX
     panel = pygame.Rect(0, HUD_BAR_H_PX + PANEL_GAP_PX, width,
                         len(lines) * line_h + 2 * PANEL_PAD_PX)
-    target.blit(_panel_backing(panel.size), panel.topleft)
-    y = panel.top + PANEL_PAD_PX
-    for face in faces:
-        target.blit(face, (panel.left + PANEL_PAD_PX, y))
-        y += line_h
+    left, top = panel.left + PANEL_PAD_PX, panel.top + PANEL_PAD_PX
+    target.blits([(_panel_backing(panel.size), panel.topleft),
+                  *((face, (left, top + i * line_h)) for i, face in enumerate(faces))],
+                 doreturn=False)
 
 
 @lru_cache(maxsize=TEXT_CACHE_LINES)
@@ -285,25 +361,20 @@ def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float 
     milliseconds; ``extra_lines`` end the panel (the window's stepping keys and
     state, :mod:`game.app.stepping`). Reads ``world`` and changes none of it.
     """
-    camera = world.camera
+    clip = target.get_clip()
+    offset = screen_offset(world.camera)
     wash = Wash()  # translucent fills go here
-    squares, outlines = _draw_tested(wash, world)
-    bars: list[pygame.Rect] = []
-    for body in world.bodies():
-        for move, color in ((body.last_x, SWEEP_X_COLOR), (body.last_y, SWEEP_Y_COLOR)):
-            bar = _draw_sweep(wash, move, color, camera)
-            if bar is not None:
-                bars.append(bar)
+    squares, outlines = _draw_tested(wash, world, clip, offset)
+    bars = _draw_sweeps(wash, world, clip, offset)
     wash.blend_onto(target)
-    for color, rect in squares:  # one square inside each cell a lookup visited
-        pygame.draw.rect(target, color, rect, width=1)
+    target.blits(squares, doreturn=False)  # one square inside each cell a lookup visited
     for color, rect in outlines:
         rim = rect.inflate(-2 * SHAPE_RIM_INSET_PX, -2 * SHAPE_RIM_INSET_PX)
-        pygame.draw.rect(target, SHAPE_RIM_COLOR, rim, width=1)
-        pygame.draw.rect(target, color, rect, width=1)
+        pygame.draw.rect(target, SHAPE_RIM_COLOR, rim, 1)
+        pygame.draw.rect(target, color, rect, 1)
     for bar in bars:
-        target.fill(HIT_EDGE_COLOR, bar.inflate(2 * HIT_EDGE_PX, 2 * HIT_EDGE_PX))
+        _fill(target, HIT_EDGE_COLOR, bar.inflate(2 * HIT_EDGE_PX, 2 * HIT_EDGE_PX))
     for bar in bars:
-        target.fill(HIT_COLOR, bar)
-    _draw_outlines(target, world)
-    _draw_panel(target, world, assets, fps, update_ms, extra_lines)
+        _fill(target, HIT_COLOR, bar)
+    _draw_hitboxes(target, world, clip, offset)
+    _draw_panel(target, panel_lines(world, fps, update_ms, extra_lines), assets.small_font)
