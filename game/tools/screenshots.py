@@ -54,9 +54,9 @@ class Shot:
 
 SHOTS_TO_TAKE = (
     Shot("first-steps", "levels/01-first-steps.tmx", 400, debug=False),
-    Shot("debug-overlay", "levels/01-first-steps.tmx", 200, debug=True),
-    Shot("debug-stomp", "levels/01-first-steps.tmx", 312, debug=True),
-    Shot("moving-parts", "levels/04-moving-parts.tmx", 1157, debug=True),
+    Shot("debug-overlay", "levels/01-first-steps.tmx", 212, debug=True),
+    Shot("debug-stomp", "levels/01-first-steps.tmx", 335, debug=True),
+    Shot("moving-parts", "levels/04-moving-parts.tmx", 1092, debug=True),
     Shot("debug-fast-fall", "levels/showcase/fast-fall.tmx", 1, debug=True, scripted=False),
 )
 
