@@ -112,14 +112,21 @@ def test_walking_into_an_enemy_from_the_side_costs_a_life() -> None:
     assert campaign.world.player.box.x == level.spawn.x   # back at the spawn
 
 
+TWO_COINS = level_from_ascii([
+    "      ",
+    " P CC ",
+    "######",
+], spawn=Box(16, 18, 12, 14))
+
+
+def two_coins_at_one_tick_of_running() -> Campaign:
+    """A campaign whose first tick of running right (40 px) passes over both its coins."""
+    return Campaign(Path("x.tmx"), replace(INSTANT, run_speed_px_s=60 * 40.0),
+                    loader=lambda _: TWO_COINS)
+
+
 def test_two_coins_touched_in_one_tick_are_both_counted() -> None:
-    level = level_from_ascii([
-        "      ",
-        " P CC ",
-        "######",
-    ], spawn=Box(16, 18, 12, 14))
-    campaign = Campaign(Path("x.tmx"), replace(INSTANT, run_speed_px_s=60 * 40.0),
-                        loader=lambda _: level)
+    campaign = two_coins_at_one_tick_of_running()
     campaign.tick(RIGHT)             # 40 px in one tick: over both coins at once
     assert campaign.coins_collected == 2
     assert campaign.score == 2
@@ -407,19 +414,13 @@ def test_a_run_that_writes_a_report_measures_penetration_and_one_that_does_not_s
 
 @pytest.mark.parametrize("again", ["restart", "reload"])
 def test_a_restart_or_a_reload_takes_back_what_the_level_had_counted(again: str) -> None:
-    level = level_from_ascii([
-        "      ",
-        " P CC ",
-        "######",
-    ], spawn=Box(16, 18, 12, 14))
-    campaign = Campaign(Path("x.tmx"), replace(INSTANT, run_speed_px_s=60 * 40.0),
-                        loader=lambda _: level)
+    campaign = two_coins_at_one_tick_of_running()
     campaign.tick(RIGHT)             # both coins in one tick
     assert (campaign.coins_collected, campaign.score, campaign.level_coins) == (2, 2, 2)
     if again == "restart":
         campaign.restart_level()
     else:
-        campaign.reload(level)
+        campaign.reload(TWO_COINS)
     assert len(campaign.world.coins) == 2          # back in play...
     assert (campaign.coins_collected, campaign.score, campaign.level_coins) == (0, 0, 0)
     campaign.restart_level()                      # from the spawn, over both again
