@@ -1,7 +1,9 @@
 """The tile-grid lookup: find the solid shapes near a box without scanning every wall.
 
-Where it sits: built once per level by the loader; queried by :mod:`game.sim.movement` in the
-x and y passes of every tick, and by the ground probe, the hazard and the ledge checks.
+Where it sits: built once per level by the loader; a world plays on a grid that shares its
+buckets and carries the level's moving platforms as a second layer
+(:meth:`TileGrid.with_movers`), queried by :mod:`game.sim.movement` in the x and y passes of
+every tick, and by the ground probe, the hazard and the ledge checks.
 
 What it teaches:
   * A tile map *is* a spatial partition. The cells a box covers are found by dividing its
@@ -15,6 +17,9 @@ What it teaches:
     as an :data:`Entry`: its four edges as floats, its kind and the shape itself. A query
     (:meth:`TileGrid.entries_in`) takes the region's four edges and compares floats; it
     builds no boxes, no generators, and nothing per shape it rejects.
+  * **Things that move, filed where they can be.** A layer of movers (the platforms) is
+    filed in the same cells, each in every cell its route can take it to, and the same
+    query looks them up in the cells it visits: no query scans every platform.
   * **Counting and logging the work.** Every query adds what it visited to
     :class:`QueryStats`; when a :class:`QueryLog` is attached (the debug overlay attaches
     one), it also writes down which cells it looked in, so the overlay can show exactly
