@@ -12,6 +12,7 @@ from pathlib import Path
 import pygame
 import pytest
 
+from game.app import frame as frame_module
 from game.app.cli import parser
 from game.app.effects import Effects
 from game.app.run import Run
@@ -142,3 +143,23 @@ def test_the_overlay_and_the_readme_name_the_same_stepping_keys() -> None:
     rows = {label: row for row in controls.splitlines() for label in labels
             if re.match(rf"\| {label} \|", row)}
     assert set(rows) == set(labels), "the README's controls table lists each stepping key"
+
+
+def test_a_screenshot_at_the_end_of_a_window_run_shows_the_panel_the_window_showed(
+        display: None, monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    panels: list[tuple[float | None, float]] = []
+
+    def recording(target: pygame.Surface, world: object, assets: object, fps: float | None,
+                  update_ms: float, lines: object = ()) -> None:
+        panels.append((fps, update_ms))
+
+    monkeypatch.setattr(frame_module, "draw_debug", recording)
+    monkeypatch.setattr(pygame.event, "get", lambda *_, **__: [])
+    level = level_from_ascii(["          ", " P        ", "##########"])
+    shot = tmp_path / "shot.png"
+    args = parser().parse_args(["--level", "x.tmx", "--debug", "--ticks", "5",
+                                "--screenshot", str(shot)])
+    assert play_in_window(Run(Campaign(Path("x.tmx"), loader=lambda _: level), None, args)) == 0
+    assert shot.is_file()
+    fps, update_ms = panels[-1]      # the screenshot's panel: the window's, not "no window"
+    assert fps is not None and update_ms > 0

@@ -237,7 +237,9 @@ def play_in_window(run: Run) -> int:
                 if run.finished() or finish is not None:
                     break
             if run.finished() and (scripted or run.args.ticks is not None):
-                run.write_outputs(render_frame(run.campaign, debug=debug, renderer=renderer))
+                run.write_outputs(render_frame(
+                    run.campaign, debug=debug, renderer=renderer, fps=clock.get_fps(),
+                    update_ms=run.last_update_ms, debug_lines=stepping.lines(run.campaign.ticks)))
                 return EXIT_OK
             if banner is not None:
                 menus = cleared(menus)
