@@ -11,7 +11,6 @@ import os
 import shutil
 import subprocess
 import sys
-import time
 import zlib
 from pathlib import Path
 
@@ -22,6 +21,7 @@ from game.levels import LEVELS_DIR, LevelError, check_level, load_level
 from game.sim.level import Level
 from game.sim.tilegrid import TileKind
 from game.sim.tuning import Tuning
+from tests.hang_guard import hang_guard
 
 TILESET = """<tileset firstgid="1" name="t" tilewidth="16" tileheight="16" tilecount="4"
  columns="4">{image}
@@ -135,12 +135,11 @@ MANY = {
 
 
 @pytest.mark.parametrize("what", sorted(MANY))
-def test_absurdly_many_tilesets_layers_or_objects_are_refused_quickly(tmp_path: Path,
-                                                                      what: str) -> None:
-    started = time.perf_counter()
-    message = refusal(write_map(tmp_path, MANY[what].replace("{i}", "1") + layer()))
+def test_absurdly_many_tilesets_layers_or_objects_are_refused_by_count(tmp_path: Path,
+                                                                       what: str) -> None:
+    with hang_guard():
+        message = refusal(write_map(tmp_path, MANY[what].replace("{i}", "1") + layer()))
     assert f"{what}, more than the" in message
-    assert time.perf_counter() - started < 2
 
 
 @pytest.mark.parametrize("where", ["map", "tileset"])
