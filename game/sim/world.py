@@ -175,7 +175,7 @@ class World:
         self.trigger_cells = TriggerCells(self.grid.tile_w, self.grid.tile_h)
         for trigger in (*self.coins, *self.exits, *self.checkpoints):
             self.trigger_cells.file(trigger.box)
-        self.hazard_cells = TriggerCells(self.grid.tile_w, self.grid.tile_h)  # the spikes'
+        self.hazard_cells = TriggerCells(self.grid.tile_w, self.grid.tile_h)  # spikes, alike
         for shape in self.grid.shapes():
             if shape.kind is TileKind.HAZARD:
                 self.hazard_cells.file(shape.box)
@@ -195,7 +195,7 @@ class World:
         events: list[Event] = []
         dt = self.tuning.tick_s
         solids = self.solids
-        self.grid.stats.reset()  # the lookups' counts, for this tick only
+        self.grid.stats.reset()
         # The query log, when asked for: each lookup below is written down under the
         # purpose last set here, so the overlay can show exactly what this tick tested.
         log = self.grid.log = self.query_log if self.measure.queries else None
@@ -339,8 +339,7 @@ class World:
         it hit is the one the probe would find first. So the probe only runs when it did not.
         """
         landed = body.last_y.hit if body.last_y is not None else None
-        if (landed is not None and landed.side is Side.BOTTOM
-                and landed.face == body.box.y + body.box.h):
+        if landed is not None and landed.side is Side.BOTTOM and landed.face == body.box.bottom:
             body.standing_on = landed.shape
         else:
             body.standing_on = ground_under(self.solids, body.box,
