@@ -238,7 +238,7 @@ def _read(path: Path, findings: Findings, images: bool, check_images: bool,
     colliding = [_collides(gids, tilesets) for _layer, gids in decoded]
     behind, in_front = _split_by_objects(layers, pytmx_bridge.drawn_layers(
         tmx, [layer for layer, _gids in decoded], colliding))
-    animations = pytmx_bridge.animations(tmx, [*behind, *in_front])
+    animated = pytmx_bridge.animated_tiles(tmx, [*behind, *in_front])
     next_level = properties.get("next_level")
     return Level(
         path=path, grid=grid, spawn=entities.spawn, coins=entities.coins,
@@ -247,9 +247,9 @@ def _read(path: Path, findings: Findings, images: bool, check_images: bool,
         title=str(properties.get("title") or path.stem),
         next_level=path.parent / str(next_level) if next_level else None,
         properties=properties, layers=tuple(behind), foreground=tuple(in_front),
-        tile_images=pytmx_bridge.tile_images(tmx, [*behind, *in_front])
+        tile_images=pytmx_bridge.tile_images(tmx, [*behind, *in_front], animated)
         if images else {},
-        animations=animations, background_color=header.background)
+        animations=animated.animations, background_color=header.background)
 
 
 def load_level(path: Path | str, *, images: bool = False, tuning: Tuning | None = None,

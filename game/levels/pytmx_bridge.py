@@ -24,9 +24,9 @@ height="1"><data encoding="csv">1,2147483649</data></layer></map>'
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 import pygame
 from pytmx.util_pygame import handle_transformation
@@ -113,7 +113,12 @@ def drawn_layers(tmx: Any, layers: Sequence[LayerNode], colliding: Sequence[bool
             for layer, parsed, collides in zip(layers, tmx.layers, colliding, strict=True)]
 
 
-Frame = tuple[int, int, Any]  # a frame's id in pytmx, its time in ms, the turn to give it
+class Animated(NamedTuple):
+    """The animations of the tiles the layers use, in pytmx's ids, and the frames that must
+    be shown turned: each under a new id (after all of pytmx's), with its frame and turn."""
+
+    animations: dict[int, Animation]
+    turned: dict[int, tuple[int, Any]]
 
 
 def _turned(flags: Any) -> bool:
@@ -121,61 +126,45 @@ def _turned(flags: Any) -> bool:
                                       or flags.flipped_diagonally)
 
 
-def _animated(tmx: Any, layers: Sequence[TileLayer]) -> dict[int, tuple[Frame, ...]]:
-    """The frames of every animated tile id the layers use, in pytmx's ids.
+def _used(layers: Sequence[TileLayer]) -> set[int]:
+    return {gid for layer in layers for row in layer.gids for gid in row if gid}
+
+
+def animated_tiles(tmx: Any, layers: Sequence[TileLayer]) -> Animated:
+    """The animation of every animated tile id the layers use: (frame id, ms) per frame.
 
     pytmx gives a flipped or rotated tile an id of its own, with its image turned, but its
     animation lists the plain frames: shown as they are, a mirrored torch would flicker the
-    wrong way round. So each frame of a turned tile carries the turn its tile has.
+    wrong way round. So each frame of a turned tile gets a new id, for its frame turned the
+    same way (:func:`tile_images` draws it).
     """
     turn_of = {gid: flags for variants in tmx.gidmap.values() for gid, flags in variants}
-    used = {gid for layer in layers for row in layer.gids for gid in row if gid}
-    found: dict[int, tuple[Frame, ...]] = {}
-    for gid in sorted(used):
+    animations: dict[int, Animation] = {}
+    new_ids: dict[tuple[int, Any], int] = {}
+    for gid in sorted(_used(layers)):
         properties = tmx.get_tile_properties_by_gid(gid) or {}
-        turn = turn_of.get(gid) if _turned(turn_of.get(gid)) else None
-        frames = tuple((int(frame.gid), int(frame.duration), turn)
-                       for frame in properties.get("frames", ()))
+        turn = turn_of.get(gid)
+        frames = []
+        for frame in properties.get("frames", ()):
+            frame_gid = int(frame.gid)
+            if _turned(turn):
+                frame_gid = new_ids.setdefault((frame_gid, turn), len(tmx.images) + len(new_ids))
+            frames.append((frame_gid, int(frame.duration)))
         if frames:
-            found[gid] = frames
-    return found
+            animations[gid] = tuple(frames)
+    return Animated(animations, {new_id: key for key, new_id in new_ids.items()})
 
 
-def _turned_frame_ids(tmx: Any, animated: Mapping[int, tuple[Frame, ...]],
-                      ) -> dict[tuple[int, Any], int]:
-    """A new id, after all of pytmx's, for each frame that must be shown turned."""
-    ids: dict[tuple[int, Any], int] = {}
-    for frames in animated.values():
-        for frame_gid, _ms, turn in frames:
-            if turn is not None and (frame_gid, turn) not in ids:
-                ids[(frame_gid, turn)] = len(tmx.images) + len(ids)
-    return ids
-
-
-def animations(tmx: Any, layers: Sequence[TileLayer]) -> dict[int, Animation]:
-    """The animation of every animated tile id the layers use: (frame id, ms) per frame,
-    in pytmx's ids, like the layers' (a turned tile's frames under ids of their own)."""
-    animated = _animated(tmx, layers)
-    turned = _turned_frame_ids(tmx, animated)
-    return {gid: tuple((frame_gid if turn is None else turned[(frame_gid, turn)], ms)
-                       for frame_gid, ms, turn in frames)
-            for gid, frames in animated.items()}
-
-
-def tile_images(tmx: Any, layers: Sequence[TileLayer]) -> dict[int, pygame.Surface]:
+def tile_images(tmx: Any, layers: Sequence[TileLayer], animated: Animated,
+                ) -> dict[int, pygame.Surface]:
     """The image of every tile id the layers use, and of every frame of their animations
-    (turned as their tile is, under the ids :func:`animations` gives them)."""
-    animated = _animated(tmx, layers)
-    used = {gid for layer in layers for row in layer.gids for gid in row if gid}
-    used |= {frame_gid for frames in animated.values() for frame_gid, _, turn in frames
-             if turn is None}
+    (a turned frame turned as its tile is)."""
+    used = _used(layers) | {frame for frames in animated.animations.values()
+                            for frame, _ in frames}
     images: dict[int, pygame.Surface] = {}
     for gid in used:
-        image = tmx.images[gid] if gid < len(tmx.images) else None
+        source, turn = animated.turned.get(gid, (gid, None))
+        image = tmx.images[source] if source < len(tmx.images) else None
         if isinstance(image, pygame.Surface):
-            images[gid] = image
-    for (frame_gid, turn), new_id in _turned_frame_ids(tmx, animated).items():
-        image = tmx.images[frame_gid] if frame_gid < len(tmx.images) else None
-        if isinstance(image, pygame.Surface):
-            images[new_id] = handle_transformation(image, turn)
+            images[gid] = image if turn is None else handle_transformation(image, turn)
     return images
