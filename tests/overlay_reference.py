@@ -4,7 +4,8 @@
 long way round: every lookup's cells, every sweep and every square, in sight or not, one
 rectangle at a time, and the panel line by line. Nothing is skipped or reused between
 frames, so it is plainly what the README describes; the tests compare the two pixel for
-pixel. The colours, the panel's text and its cached lines come from the game's module.
+pixel. The colours, the panel's text and its cached lines, and the layer the translucent
+fills are blended on (``Wash``), come from the game's module.
 
 It is the overlay as it was drawn before the game learnt to skip what is out of sight,
 with the two slips it then made at the edge of the screen put right (the game's overlay no
@@ -44,6 +45,7 @@ from game.app.debug_overlay import (
     SWEEP_X_COLOR,
     SWEEP_Y_COLOR,
     Checked,
+    Wash,
     _line_face,
     _panel_backing,
     panel_lines,
@@ -62,28 +64,6 @@ def _screen_rect(box: Box, camera: Camera) -> pygame.Rect:
     return pygame.Rect(math.floor(box.x) - math.floor(camera.x),
                        math.floor(box.y) - math.floor(camera.y),
                        math.ceil(box.w), math.ceil(box.h))
-
-
-class Wash:
-    """Translucent fills on one layer the size of everything filled; a later fill replaces."""
-
-    def __init__(self) -> None:
-        self.fills: list[tuple[Color, pygame.Rect]] = []
-
-    def fill(self, color: Color, rect: pygame.Rect) -> None:
-        self.fills.append((color, pygame.Rect(rect)))
-
-    def blend_onto(self, target: pygame.Surface) -> None:
-        if not self.fills:
-            return
-        rects = [rect for _, rect in self.fills]
-        area = rects[0].unionall(rects[1:]).clip(target.get_rect())
-        if not area.w or not area.h:
-            return
-        layer = pygame.Surface(area.size, pygame.SRCALPHA)
-        for color, rect in self.fills:
-            layer.fill(color, rect.clip(area).move(-area.x, -area.y))
-        target.blit(layer, area.topleft)
 
 
 def _tested(wash: Wash, world: World) -> tuple[list[Outline], list[Outline]]:

@@ -26,7 +26,6 @@ import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
-from math import ceil, floor
 
 from game.collision.aabb import Box
 from game.sim.sprite import Anchor, BoxSprite
@@ -181,22 +180,21 @@ class PlatformIndex:
     # The same block grown to whole cells: a query whose region misses it visits no cell
     # this layer files anything in, so it need not look this layer up at all.
     cell_bounds: tuple[float, float, float, float] = (math.inf, math.inf, -math.inf, -math.inf)
-    filed: int = 0   # how many platforms are in the cells (the rest are outside)
 
     def __post_init__(self) -> None:
-        self.cells = [None] * (self.grid.cols * self.grid.rows) if self.platforms else []
         for platform in self.platforms:
             self.file(platform)
 
     def file(self, platform: Platform) -> None:
-        """Put the platform in the cells of its route region."""
+        """Put the platform in the cells of its route region (the cells are made for the
+        first one: a level with no platform on the map has none)."""
         grid = self.grid
         left, top, w, h = platform.region
         right, bottom = left + w, top + h
         if not (left >= 0 and right <= grid.width_px and top >= 0 and bottom <= grid.height_px):
             self.outside.append(platform)
             return
-        if self.filed:
+        if self.cells:
             low_x, low_y, high_x, high_y = self.bounds
             self.bounds = (min(low_x, left), min(low_y, top), max(high_x, right),
                            max(high_y, bottom))
@@ -206,7 +204,6 @@ class PlatformIndex:
         first_row, end_row = math.floor(top / grid.tile_h), math.ceil(bottom / grid.tile_h)
         if not self.cells:
             self.cells = [None] * (grid.cols * grid.rows)
-        self.filed += 1
         for row in range(first_row, end_row):
             for col in range(first_col, end_col):
                 key = row * grid.cols + col
@@ -225,28 +222,18 @@ class PlatformIndex:
         """The platforms whose route region shares a cell with any of the boxes (and those
         off the map, which any box may meet)."""
         found: set[Platform] = set(self.outside)
-        if not self.filed:
+        if not self.cells:
             return found
-        grid, cells = self.grid, self.cells
-        cols, rows, tile_w, tile_h = grid.cols, grid.rows, grid.tile_w, grid.tile_h
+        grid, cells, cols = self.grid, self.cells, self.grid.cols
         low_x, low_y, high_x, high_y = self.bounds
         for x, y, w, h in boxes:
             if not (w > 0 and h > 0 and x <= high_x and low_x <= x + w and y <= high_y
                     and low_y <= y + h):
                 continue  # nowhere near any route (or NaN)
-            try:
-                first_col, last_col = floor(x / tile_w), ceil((x + w) / tile_w) - 1
-                first_row, last_row = floor(y / tile_h), ceil((y + h) / tile_h) - 1
-            except OverflowError:
+            block = grid.block_covering(x, y, x + w, y + h)
+            if block is None:
                 continue
-            if first_col < 0:
-                first_col = 0
-            if last_col >= cols:
-                last_col = cols - 1
-            if first_row < 0:
-                first_row = 0
-            if last_row >= rows:
-                last_row = rows - 1
+            first_col, last_col, first_row, last_row = block
             for row in range(first_row, last_row + 1):
                 key = row * cols
                 for col in range(first_col, last_col + 1):

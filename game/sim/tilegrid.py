@@ -37,7 +37,6 @@ What it teaches:
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from enum import Enum
@@ -194,7 +193,7 @@ class TileGrid:
     tile_h: int
     stats: QueryStats = field(default_factory=QueryStats)
     log: QueryLog | None = None  # attached by whoever wants every query written down
-    _cells: list[list[Entry] | None] = field(init=False, repr=False)   # one slot a cell
+    _cells: list[list[Entry] | None] = field(default_factory=list, repr=False)  # a slot a cell
     _empty: list[tuple[int, TileShape]] = field(default_factory=list)
     movers: MoverLayer | None = None  # a second layer of moving shapes (a world's platforms)
     width_px: int = field(init=False)   # the map's size in px, read by every x move
@@ -203,14 +202,14 @@ class TileGrid:
     def __post_init__(self) -> None:
         self.width_px = self.cols * self.tile_w
         self.height_px = self.rows * self.tile_h
-        self._cells = [None] * (self.cols * self.rows)
+        if not self._cells:  # a new grid; one made by with_movers shares its buckets
+            self._cells = [None] * (self.cols * self.rows)
 
     def with_movers(self, layer: MoverLayer) -> TileGrid:
         """The same tiles (shared, not copied) with a layer of moving shapes, and counts and
         a log of its own: what a world queries while a level plays."""
-        grid = TileGrid(self.cols, self.rows, self.tile_w, self.tile_h, movers=layer)
-        grid._cells, grid._empty = self._cells, self._empty
-        return grid
+        return TileGrid(self.cols, self.rows, self.tile_w, self.tile_h, _cells=self._cells,
+                        _empty=self._empty, movers=layer)
 
     def put(self, col: int, row: int, shape: TileShape) -> None:
         """Add a shape to cell ``(col, row)``; the shape must lie inside that cell.
@@ -246,14 +245,37 @@ class TileGrid:
         return (*(entry[5] for entry in self._cells[key] or ()),
                 *(shape for k, shape in self._empty if k == key))
 
+    def block_covering(self, left: float, top: float, right: float, bottom: float,
+                       ) -> tuple[int, int, int, int] | None:
+        """The in-map cells whose interior the region overlaps, as first and last column and
+        first and last row; None when there are none (an empty, infinite or NaN region, or
+        one off the map)."""
+        if not (right > left and bottom > top):
+            return None
+        try:  # floor() and ceil() refuse infinities
+            first_col, last_col = floor(left / self.tile_w), ceil(right / self.tile_w) - 1
+            first_row, last_row = floor(top / self.tile_h), ceil(bottom / self.tile_h) - 1
+        except OverflowError:
+            return None
+        if first_col < 0:
+            first_col = 0
+        if last_col >= self.cols:
+            last_col = self.cols - 1
+        if first_row < 0:
+            first_row = 0
+        if last_row >= self.rows:
+            last_row = self.rows - 1
+        if first_col > last_col or first_row > last_row:
+            return None
+        return first_col, last_col, first_row, last_row
+
     def cells_covering(self, region: Box) -> Iterator[tuple[int, int]]:
         """The in-map cells whose interior the region overlaps, row by row."""
-        if not region.is_finite() or region.w <= 0 or region.h <= 0:
+        x, y, w, h = region
+        block = self.block_covering(x, y, x + w, y + h)
+        if block is None:
             return
-        first_col = max(0, math.floor(region.left / self.tile_w))
-        last_col = min(self.cols - 1, math.ceil(region.right / self.tile_w) - 1)
-        first_row = max(0, math.floor(region.top / self.tile_h))
-        last_row = min(self.rows - 1, math.ceil(region.bottom / self.tile_h) - 1)
+        first_col, last_col, first_row, last_row = block
         for row in range(first_row, last_row + 1):
             for col in range(first_col, last_col + 1):
                 yield col, row
@@ -273,6 +295,7 @@ class TileGrid:
         if not (right > left and bottom > top):  # empty (or NaN): overlaps nothing
             return []
         cols = self.cols
+        # The block of block_covering, worked out inline: the hottest call of a tick.
         try:  # the covered cells, clamped to the map (floor() and ceil() refuse infinities)
             first_col, last_col = floor(left / self.tile_w), ceil(right / self.tile_w) - 1
             first_row, last_row = floor(top / self.tile_h), ceil(bottom / self.tile_h) - 1
@@ -315,7 +338,7 @@ class TileGrid:
                         for mover in movers:
                             if mover not in near and mover is not ignoring:
                                 near.append(mover)
-        if near and len(near) > 1:
+        if len(near) > 1:
             near.sort(key=_number)
         if layer is not None and layer.outside:
             near.extend(mover for mover in layer.outside if mover is not ignoring)
