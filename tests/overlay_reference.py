@@ -2,10 +2,10 @@
 
 :func:`draw_debug_plainly` paints what :func:`game.app.debug_overlay.draw_debug` paints, the
 long way round: every lookup's cells, every sweep and every square, in sight or not, one
-rectangle at a time, and the panel line by line. Nothing is skipped or reused between
-frames, so it is plainly what the README describes; the tests compare the two pixel for
-pixel. The colours, the panel's text and its cached lines, and the layer the translucent
-fills are blended on (``Wash``), come from the game's module.
+rectangle at a time. Nothing is skipped or reused between frames, so it is plainly what the
+README describes; the tests compare the two pixel for pixel. The colours, the panel (its
+text, its cached lines and its drawing) and the layer the translucent fills are blended on
+(``Wash``) come from the game's module.
 
 It is the overlay as it was drawn before the game learnt to skip what is out of sight,
 with the two slips it then made at the edge of the screen put right (the game's overlay no
@@ -34,8 +34,6 @@ from game.app.debug_overlay import (
     HIT_EDGE_PX,
     HIT_MARK_PX,
     OTHER_CELL_COLOR,
-    PANEL_GAP_PX,
-    PANEL_PAD_PX,
     PLATFORM_COLOR,
     PLAYER_COLOR,
     SHAPE_COLORS,
@@ -46,11 +44,10 @@ from game.app.debug_overlay import (
     SWEEP_Y_COLOR,
     Checked,
     Wash,
-    _line_face,
-    _panel_backing,
+    _draw_panel,
     panel_lines,
 )
-from game.app.hud import HUD_BAR_H_PX, Color
+from game.app.hud import Color
 from game.app.render import screen_offset
 from game.collision.aabb import Box
 from game.sim.camera import Camera
@@ -138,19 +135,6 @@ def _hitboxes(target: pygame.Surface, world: World) -> None:
     pygame.draw.rect(target, PLAYER_COLOR, _screen_rect(world.player.box, camera), width=1)
 
 
-def _panel(target: pygame.Surface, lines: Sequence[str], font: pygame.font.Font) -> None:
-    line_h = font.get_linesize()
-    faces = [_line_face(font, line) for line in lines]
-    width = max(face.get_width() for face in faces) + 2 * PANEL_PAD_PX
-    panel = pygame.Rect(0, HUD_BAR_H_PX + PANEL_GAP_PX, width,
-                        len(lines) * line_h + 2 * PANEL_PAD_PX)
-    target.blit(_panel_backing(panel.size), panel.topleft)
-    y = panel.top + PANEL_PAD_PX
-    for face in faces:
-        target.blit(face, (panel.left + PANEL_PAD_PX, y))
-        y += line_h
-
-
 def draw_debug_plainly(target: pygame.Surface, world: World, assets: Assets,
                        fps: float | None, update_ms: float,
                        extra_lines: Sequence[str] = ()) -> None:
@@ -175,4 +159,4 @@ def draw_debug_plainly(target: pygame.Surface, world: World, assets: Assets,
     for bar in bars:
         _fill(target, HIT_COLOR, bar)
     _hitboxes(target, world)
-    _panel(target, panel_lines(world, fps, update_ms, extra_lines), assets.small_font)
+    _draw_panel(target, panel_lines(world, fps, update_ms, extra_lines), assets.small_font)
