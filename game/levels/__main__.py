@@ -39,6 +39,7 @@ from game.levels.loader import check_level, load_level
 from game.levels.reach import measure_reach
 from game.levels.route_picture import save_route
 from game.levels.solver import Effort, solve
+from game.sim.level import Level
 from game.sim.tuning import TICK_HZ, Tuning
 
 DEFAULT_SOLVE_SECONDS = 120.0  # how long check looks for a route on one map
@@ -63,10 +64,9 @@ def _maps(path: Path) -> Iterator[tuple[Path, str | None]]:
         yield from ((map_path, None) for map_path in found)
 
 
-def _unsolved(path: Path, seconds: float | None) -> tuple[str, bool] | None:
+def _unsolved(path: Path, level: Level, seconds: float | None) -> tuple[str, bool] | None:
     """The line for a map whose Exit the solver did not reach, and whether it is an error
     (the search gave up) or a warning (it ran out of time, which proves nothing)."""
-    level = load_level(path)
     solution = solve(level, Effort(seconds=seconds))
     if solution.found:
         return None
@@ -82,21 +82,10 @@ def _unsolved(path: Path, seconds: float | None) -> tuple[str, bool] | None:
             "how far the search got", True)
 
 
-def _own_physics(path: Path) -> Tuning | None:
-    """The tuning a readable map plays with, when its physics properties change the
-    default (None when they do not, or the map cannot be read)."""
-    try:
-        tuning = Tuning().with_map_properties(load_level(path).properties)
-    except LevelError:
-        return None
-    return None if tuning == Tuning() else tuning
-
-
 def _reach_summary(own: list[tuple[Path, Tuning]]) -> str:
     """The player's reach with the default physics, then on each map that sets its own."""
-    text = "the player " + measure_reach(Tuning()).describe(TILE_PX)
-    if own:
-        text = text.replace("the player", "with the default physics the player", 1)
+    text = ("with the default physics the player " if own else "the player ") + \
+        measure_reach(Tuning()).describe(TILE_PX)
     for path, tuning in own:
         text += f"; on {path.name}, with its own physics, it " + \
             measure_reach(tuning).describe(TILE_PX)
@@ -118,8 +107,13 @@ def check(paths: list[Path], solve_seconds: float | None = DEFAULT_SOLVE_SECONDS
             try:
                 findings = check_level(path)
                 lines, failed = list(findings.lines()), bool(findings.errors)
-                if not failed and solve_seconds is not None:
-                    unsolved = _unsolved(path, solve_seconds)
+                if not failed:
+                    level = load_level(path)
+                    tuning = Tuning().with_map_properties(level.properties)
+                    if tuning != Tuning():  # its properties change the physics
+                        own.append((path, tuning))
+                    unsolved = (None if solve_seconds is None
+                                else _unsolved(path, level, solve_seconds))
                     if unsolved is not None:
                         lines.append(unsolved[0])
                         failed = unsolved[1]
@@ -130,9 +124,6 @@ def check(paths: list[Path], solve_seconds: float | None = DEFAULT_SOLVE_SECONDS
             for line in lines:
                 print(line)
             failures += failed
-            tuning = None if failed else _own_physics(path)
-            if tuning is not None:
-                own.append((path, tuning))
     verdict = "all playable" if not failures else f"{failures} not playable"
     solved = ", each solved from spawn to Exit" if solve_seconds is not None and not failures \
         else ""
