@@ -13,9 +13,10 @@ A frame in the window (:mod:`game.app.window`), in order:
 2. **Ticks**: the fixed-step loop (:mod:`game.sim.fixed_step`) says how many 1/60 s ticks are
    due (none while frozen, one per F3); each one reads the held actions (keyboard and pads
    together, or the script) and calls ``Campaign.tick``.
-3. **Draw**: world, HUD, the debug overlay if on, then any screen (title, pause, ...).
+3. **Banner**: a finished level's tally counts up while the simulation waits for it.
+4. **Draw**: world, HUD, the debug overlay if on, then any screen (title, pause, ...).
 
-Headless runs skip 1 and 3 and step as fast as the machine allows.
+Headless runs skip 1, 3 and 4 and step as fast as the machine allows.
 """
 
 from __future__ import annotations

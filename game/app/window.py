@@ -5,6 +5,10 @@ frame reads the keyboard and any gamepads, runs the fixed-step loop, and draws. 
 press does in a menu is decided in :mod:`game.app.menus` (a small state machine this loop only
 feeds and obeys); how pads become actions and menu moves is in :mod:`game.app.gamepad`.
 
+The loop is :class:`GameWindow`: what lasts between frames, and one short method per phase of
+a frame, called in order by :meth:`GameWindow.play`: events, reload on save (``--watch``),
+music, ticks, the level-end banner, draw.
+
 Screens: the title (Play, Level select, Quit), the level select, playing, paused (Esc, P or
 Start; Resume, Restart level, Quit to title), game over and won (Enter or A returns to the
 title). Arrows, W/S, the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B
@@ -67,6 +71,7 @@ from game.levels import FIRST_LEVEL, LevelError
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
 from game.sim.campaign import Campaign, Outcome
 from game.sim.fixed_step import FixedStep
+from game.sim.inputs import Actions
 from game.sim.sprite import ANIMATION_HZ
 
 MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT)  # drawn instead of the world
@@ -115,174 +120,251 @@ def fit_window(window: Window) -> None:
     window.position = WINDOWPOS_CENTERED
 
 
-def play_in_window(run: Run) -> int:
-    """The interactive loop; returns when the window closes or a scripted run ends."""
-    assets = load_assets()
-    renderer = WorldRenderer(assets)  # keeps the tile caches and sprite group between frames
-    clock = pygame.time.Clock()
-    stepper = FixedStep()
-    stepping = TickControl()  # with the overlay on: freeze, one tick, quarter speed
-    scripted = run.script is not None
-    menus = Menus(Screen.PLAYING if scripted or run.args.level else Screen.TITLE)
-    debug = bool(run.args.debug)
-    frame = 0
-    watcher: FileWatcher | None = None
-    reload_error: str | None = None
-    # The player's own files, read only when a person plays (never a scripted or timed run).
-    personal = not scripted and run.args.ticks is None
-    settings_store, progress_store = settings_file(), progress_file()
-    settings, progress, notice = Settings(), Progress(), None
-    if personal:
-        settings, settings_problem = settings_store.load(Settings.from_json, Settings)
-        progress, progress_problem = progress_store.load(Progress.from_json, Progress)
-        notice = settings_problem or progress_problem
-    keys, buttons = settings.key_codes(), settings.button_numbers()
-    effects = renderer.effects = Effects(shake_on=settings.screen_shake)
-    window = Window.from_display_module()  # held while the window is open (see fit_window)
-    fit_window(window)
-    if settings.fullscreen:
-        pygame.display.toggle_fullscreen()
-    audio = Audio()  # silent, without a word, when there is no sound card
-    audio.set_volume(settings.effects_volume, settings.music_volume)
-    pads, stick_edges, held_over = Gamepads(), StickEdges(), HeldOver()
-    using_pad = False  # the title shows the controls of the device last pressed
-    levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks and bests read each frame
-    attempt = Attempt()
-    banner: Banner | None = None
-    dirty, last_shown = True, None  # what a still screen last drew (see step 3)
-    while True:
-        frame_s = clock.tick(frame_rate(menus.screen)) / 1000.0
-        frame += max(1, round(frame_s * ANIMATION_HZ))  # animations keep time at any rate
-        entries = level_entries(levels, progress)
-        # 1. Events: the window, pads plugged in or out, overlay and fullscreen, menus.
+class GameWindow:
+    """The window's state between frames, and one method per phase of a frame.
+
+    :meth:`play` runs frames until the window closes; each frame is :meth:`events`,
+    :meth:`reload_on_save`, :meth:`music`, :meth:`ticks`, :meth:`banner_phase` and
+    :meth:`draw`, in that order (the order :mod:`game.app.run` describes)."""
+
+    def __init__(self, run: Run) -> None:
+        self.run = run
+        self.assets = load_assets()
+        self.renderer = WorldRenderer(self.assets)  # keeps its caches between frames
+        self.clock = pygame.time.Clock()
+        self.stepper = FixedStep()
+        self.stepping = TickControl()  # with the overlay on: freeze, one tick, quarter speed
+        self.scripted = run.script is not None
+        self.menus = Menus(Screen.PLAYING if self.scripted or run.args.level else Screen.TITLE)
+        self.debug = bool(run.args.debug)
+        self.frame = 0  # animation frames of the menus, counted at ANIMATION_HZ
+        self.watcher: FileWatcher | None = None
+        self.reload_error: str | None = None
+        # The player's own files, read only when a person plays (never a scripted or timed run).
+        self.personal = not self.scripted and run.args.ticks is None
+        self.settings_store, self.progress_store = settings_file(), progress_file()
+        self.settings, self.progress = Settings(), Progress()
+        self.notice: str | None = None  # a problem with the player's files, shown in menus
+        if self.personal:
+            self.settings, settings_problem = self.settings_store.load(Settings.from_json, Settings)
+            self.progress, progress_problem = self.progress_store.load(Progress.from_json, Progress)
+            self.notice = settings_problem or progress_problem
+        self.keys, self.buttons = self.settings.key_codes(), self.settings.button_numbers()
+        self.effects = self.renderer.effects = Effects(shake_on=self.settings.screen_shake)
+        self.window = Window.from_display_module()  # held while the window is open (fit_window)
+        fit_window(self.window)
+        if self.settings.fullscreen:
+            pygame.display.toggle_fullscreen()
+        self.audio = Audio()  # silent, without a word, when there is no sound card
+        self.audio.set_volume(self.settings.effects_volume, self.settings.music_volume)
+        self.pads, self.stick_edges, self.held_over = Gamepads(), StickEdges(), HeldOver()
+        self.using_pad = False  # the title shows the controls of the device last pressed
+        self.levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks, bests each frame
+        self.entries = level_entries(self.levels, self.progress)
+        self.attempt = Attempt()
+        self.banner: Banner | None = None
+        self.dirty = True  # a still screen is drawn again after any event (see draw)
+        self.last_shown: tuple[Menus, str | None, str | None, bool] | None = None
+
+    def play(self) -> int:
+        """Run frames until the window closes or a scripted run ends; the exit status."""
+        while True:
+            frame_s = self.clock.tick(frame_rate(self.menus.screen)) / 1000.0
+            self.frame += max(1, round(frame_s * ANIMATION_HZ))  # animations keep time at any rate
+            self.entries = level_entries(self.levels, self.progress)
+            status = self.events()
+            if status is None:
+                self.reload_on_save()
+                self.music()
+                status = self.ticks(frame_s)
+            if status is not None:
+                return status
+            self.banner_phase(frame_s)
+            self.draw()
+
+    def held(self) -> Actions:
+        """What the keyboard and the pads hold right now."""
+        return held_keys(self.keys) | self.pads.held(self.buttons)
+
+    def save_settings(self) -> None:
+        if self.personal:
+            self.notice = self.settings_store.save(self.settings.to_json()) or self.notice
+
+    def save_progress(self) -> None:
+        if self.personal:
+            self.notice = self.progress_store.save(self.progress.to_json()) or self.notice
+
+    def quit(self) -> int:
+        """Write what the options ask for (a screenshot of the last frame shown) and end."""
+        self.run.write_outputs(pygame.display.get_surface())
+        return EXIT_OK
+
+    # 1. Events: the window, pads plugged in or out, overlay and fullscreen, menus.
+    def events(self) -> int | None:
+        """Handle this frame's events; the exit status if one of them ends the game."""
         for event in pygame.event.get():
-            dirty = True  # a still screen is drawn again after any event (a key, an expose)
+            self.dirty = True  # a still screen is drawn again after any event (a key, an expose)
             if event.type == pygame.QUIT:
-                run.write_outputs(pygame.display.get_surface())
-                return EXIT_OK
-            pads.handle(event)
-            using_pad = pad_in_use(event, using_pad)
+                return self.quit()
+            self.pads.handle(event)
+            self.using_pad = pad_in_use(event, self.using_pad)
             if event.type == pygame.KEYDOWN and event.key == pygame.K_F1:
-                debug = not debug
-                run.campaign.measure.queries = debug  # the overlay draws the tick's query log
-            elif event.type == pygame.KEYDOWN and stepping.press(event.key, overlay_on=debug):
+                self.debug = not self.debug
+                self.run.campaign.measure.queries = self.debug  # the overlay draws the query log
+            elif event.type == pygame.KEYDOWN and self.stepping.press(event.key,
+                                                                      overlay_on=self.debug):
                 pass
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_F11:
-                pygame.display.toggle_fullscreen()
-                settings.fullscreen = not settings.fullscreen
-                if not settings.fullscreen:
-                    fit_window(window)  # back to the scaled, centred window
-                if personal:
-                    notice = settings_store.save(settings.to_json()) or notice
-            elif (nav := _nav(event, stick_edges, menus.screen)) is not None:
-                if banner is not None and not banner.skippable():
+                self.toggle_fullscreen()
+            elif (nav := _nav(event, self.stick_edges, self.menus.screen)) is not None:
+                if self.banner is not None and not self.banner.skippable():
                     continue  # a jump held over the exit must not skip the tally unseen
-                before = menus
-                menus, command = press(menus, nav, entries)
-                if menus != before or command is not None:
-                    audio.play("menu")
-                if isinstance(command, QuitGame):
-                    run.write_outputs(pygame.display.get_surface())
-                    return EXIT_OK
-                if command is not None and (problem := _obey(command, run)) is not None:
-                    menus, notice = before, problem  # stay on the menu and say why
-                if menus.screen is Screen.PLAYING and before.screen is not Screen.PLAYING:
-                    held_over.begin(held_keys(keys) | pads.held(buttons))
+                if self.menu_press(nav):
+                    return self.quit()
+        return None
 
-        # Reload on save (--watch): a bad save keeps the old level and shows why.
-        if run.args.watch:
-            path = run.campaign.world.level.path
-            if watcher is None or watcher.level_path != path:
-                watcher, reload_error = FileWatcher(path), None
-            elif watcher.poll(time.monotonic()):
-                try:
-                    run.campaign.reload(run.campaign.loader(path))
-                    reload_error = None
-                except LevelError as error:
-                    reload_error = str(error)
+    def toggle_fullscreen(self) -> None:
+        """F11: fill the screen, or go back to the scaled, centred window; remembered."""
+        pygame.display.toggle_fullscreen()
+        self.settings.fullscreen = not self.settings.fullscreen
+        if not self.settings.fullscreen:
+            fit_window(self.window)
+        self.save_settings()
 
-        # Music plays while playing, holds its place while paused, stops elsewhere.
-        if menus.screen is Screen.PLAYING:
-            audio.start_music()
-        elif menus.screen is Screen.PAUSED:
-            audio.pause_music()
+    def menu_press(self, nav: Nav) -> bool:
+        """Move through the menus and obey what they command; True if that is to quit."""
+        before = self.menus
+        self.menus, command = press(self.menus, nav, self.entries)
+        if self.menus != before or command is not None:
+            self.audio.play("menu")
+        if isinstance(command, QuitGame):
+            return True
+        if command is not None and (problem := _obey(command, self.run)) is not None:
+            self.menus, self.notice = before, problem  # stay on the menu and say why
+        if self.menus.screen is Screen.PLAYING and before.screen is not Screen.PLAYING:
+            self.held_over.begin(self.held())
+        return False
+
+    def reload_on_save(self) -> None:
+        """With --watch: reload the level when its file changes; a bad save keeps the old
+        level and shows why."""
+        if not self.run.args.watch:
+            return
+        path = self.run.campaign.world.level.path
+        if self.watcher is None or self.watcher.level_path != path:
+            self.watcher, self.reload_error = FileWatcher(path), None
+        elif self.watcher.poll(time.monotonic()):
+            try:
+                self.run.campaign.reload(self.run.campaign.loader(path))
+                self.reload_error = None
+            except LevelError as error:
+                self.reload_error = str(error)
+
+    def music(self) -> None:
+        """Music plays while playing, holds its place while paused, stops elsewhere."""
+        if self.menus.screen is Screen.PLAYING:
+            self.audio.start_music()
+        elif self.menus.screen is Screen.PAUSED:
+            self.audio.pause_music()
         else:
-            audio.stop_music()
+            self.audio.stop_music()
 
-        # 2. Ticks: as many fixed 1/60 s steps as real time has paid for, each with what the
-        # keyboard and the pads hold; each tick's events sound, and a finished level is saved.
-        if menus.screen is Screen.PLAYING:
-            due = stepping.ticks_due(stepper, frame_s, overlay_on=debug)
-            # Effects age in game time, by the ticks this frame runs: they stand still in
-            # menus and while frozen (F2), and slow down at quarter speed (F4), as sprites do.
-            effects.advance(due * stepper.tick_s)
-            for _ in range(due):
-                attempt.before_tick(run.campaign)
-                finishing = run.campaign.world
-                try:
-                    events = run.tick(held_over.filter(held_keys(keys) | pads.held(buttons)))
-                    effects.observe(finishing, events)
-                except LevelError as error:  # the next level will not load: say so, go back
-                    menus, notice = Menus(), str(error)
-                    break
-                for tick_event in events:
-                    audio.play(tick_event.kind)
-                finish = attempt.after_tick(run.campaign, events)
-                if finish is not None:
-                    banner = Banner(run.campaign.results[-1],
-                                    progress.best_ticks.get(finish.level), world=finishing)
-                    progress.record(finish)
-                    if personal:
-                        notice = progress_store.save(progress.to_json()) or notice
-                if run.finished() or finish is not None:
-                    break
-            if run.finished() and (scripted or run.args.ticks is not None):
-                run.write_outputs(render_frame(
-                    run.campaign, debug=debug, renderer=renderer, fps=clock.get_fps(),
-                    update_ms=run.last_update_ms, debug_lines=stepping.lines(run.campaign.ticks)))
-                return EXIT_OK
-            if banner is not None:
-                menus = cleared(menus)
-            elif run.finished():
-                menus = ended(menus)
-        else:
-            stepper.advance(0.0)
-        # The level-end banner: a pause of the window only; the simulation waits for it.
-        if banner is not None:
-            if (sound := banner.advance(frame_s)) is not None:
-                audio.play(sound)
-            if banner.done() or menus.screen is not Screen.CLEARED:
-                banner = None
-                if menus.screen is Screen.CLEARED:
-                    menus = replace(menus, screen=Screen.PLAYING)
-                if run.finished():
-                    menus = ended(menus)
-                elif menus.screen is Screen.PLAYING:
-                    held_over.begin(held_keys(keys) | pads.held(buttons))
+    # 2. Ticks: as many fixed 1/60 s steps as real time has paid for, each with what the
+    # keyboard and the pads hold; each tick's events sound, and a finished level is saved.
+    def ticks(self, frame_s: float) -> int | None:
+        """Run the ticks this frame is due; the exit status if a scripted or timed run ends."""
+        if self.menus.screen is not Screen.PLAYING:
+            self.stepper.advance(0.0)
+            return None
+        due = self.stepping.ticks_due(self.stepper, frame_s, overlay_on=self.debug)
+        # Effects age in game time, by the ticks this frame runs: they stand still in
+        # menus and while frozen (F2), and slow down at quarter speed (F4), as sprites do.
+        self.effects.advance(due * self.stepper.tick_s)
+        for _ in range(due):
+            if not self.tick():
+                break
+        run = self.run
+        if run.finished() and (self.scripted or run.args.ticks is not None):
+            run.write_outputs(render_frame(
+                run.campaign, debug=self.debug, renderer=self.renderer, fps=self.clock.get_fps(),
+                update_ms=run.last_update_ms, debug_lines=self.stepping.lines(run.campaign.ticks)))
+            return EXIT_OK
+        if self.banner is not None:
+            self.menus = cleared(self.menus)
+        elif run.finished():
+            self.menus = ended(self.menus)
+        return None
 
-        # 3. Draw: the world, HUD and overlay (or a menu in their place), then any screen on
-        # top, then a problem to report, if there is one. A still screen (pause, game over,
-        # the win) is drawn once, and again only after an event or a change of what it shows.
-        shown = (menus, notice, reload_error, debug)
-        if menus.screen in STILL_SCREENS and not dirty and shown == last_shown:
-            continue
-        dirty, last_shown = False, shown
+    def tick(self) -> bool:
+        """One tick with what is held; False when no more ticks should run this frame (the
+        level or the run ended, or the next level will not load)."""
+        run = self.run
+        self.attempt.before_tick(run.campaign)
+        finishing = run.campaign.world
+        try:
+            events = run.tick(self.held_over.filter(self.held()))
+            self.effects.observe(finishing, events)
+        except LevelError as error:  # the next level will not load: say so, go back
+            self.menus, self.notice = Menus(), str(error)
+            return False
+        for tick_event in events:
+            self.audio.play(tick_event.kind)
+        finish = self.attempt.after_tick(run.campaign, events)
+        if finish is not None:
+            self.banner = Banner(run.campaign.results[-1],
+                                 self.progress.best_ticks.get(finish.level), world=finishing)
+            self.progress.record(finish)
+            self.save_progress()
+        return not (run.finished() or finish is not None)
+
+    # The level-end banner: a pause of the window only; the simulation waits for it.
+    def banner_phase(self, frame_s: float) -> None:
+        """Advance the banner's tally; when it is done (or skipped), play on or end."""
+        if self.banner is None:
+            return
+        if (sound := self.banner.advance(frame_s)) is not None:
+            self.audio.play(sound)
+        if self.banner.done() or self.menus.screen is not Screen.CLEARED:
+            self.banner = None
+            if self.menus.screen is Screen.CLEARED:
+                self.menus = replace(self.menus, screen=Screen.PLAYING)
+            if self.run.finished():
+                self.menus = ended(self.menus)
+            elif self.menus.screen is Screen.PLAYING:
+                self.held_over.begin(self.held())
+
+    # 3. Draw: the world, HUD and overlay (or a menu in their place), then any screen on
+    # top, then a problem to report, if there is one.
+    def draw(self) -> None:
+        """Draw the frame and show it. A still screen (pause, game over, the win) is drawn
+        once, and again only after an event or a change of what it shows."""
+        shown = (self.menus, self.notice, self.reload_error, self.debug)
+        if self.menus.screen in STILL_SCREENS and not self.dirty and shown == self.last_shown:
+            return
+        self.dirty, self.last_shown = False, shown
         target = pygame.display.get_surface()
-        if menus.screen not in MENU_SCREENS:
+        campaign = self.run.campaign
+        if self.menus.screen not in MENU_SCREENS:
             # Sprites animate by game time: still while paused or frozen, slow when slowed.
-            render_frame(run.campaign, debug=debug, renderer=renderer,
-                         frame=run.campaign.ticks, fps=clock.get_fps(),
-                         update_ms=run.last_update_ms,
-                         world=banner.world if banner is not None else None,
-                         debug_lines=stepping.lines(run.campaign.ticks))
-        if banner is not None:
-            banner.draw(target, assets)
-        _draw_screen(target, assets, menus, entries, run.campaign, frame, using_pad)
-        if reload_error is not None:
-            draw_error_banner(target, assets, RELOAD_FAILED + reload_error)
-        elif notice is not None and menus.screen is not Screen.PLAYING:
-            draw_error_banner(target, assets, notice)
+            render_frame(campaign, debug=self.debug, renderer=self.renderer,
+                         frame=campaign.ticks, fps=self.clock.get_fps(),
+                         update_ms=self.run.last_update_ms,
+                         world=self.banner.world if self.banner is not None else None,
+                         debug_lines=self.stepping.lines(campaign.ticks))
+        if self.banner is not None:
+            self.banner.draw(target, self.assets)
+        _draw_screen(target, self.assets, self.menus, self.entries, campaign, self.frame,
+                     self.using_pad)
+        if self.reload_error is not None:
+            draw_error_banner(target, self.assets, RELOAD_FAILED + self.reload_error)
+        elif self.notice is not None and self.menus.screen is not Screen.PLAYING:
+            draw_error_banner(target, self.assets, self.notice)
         pygame.display.flip()
+
+
+def play_in_window(run: Run) -> int:
+    """The interactive loop; returns when the window closes or a scripted run ends."""
+    return GameWindow(run).play()
 
 
 def _nav(event: pygame.event.Event, stick_edges: StickEdges, screen: Screen) -> Nav | None:
