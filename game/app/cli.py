@@ -1,9 +1,9 @@
 """The command line of ``python -m game`` (see the README and the contract).
 
 Where it sits: the outermost layer. It parses options, turns every bad input into one
-sentence and an exit status (0 done, 1 a file that cannot be read or written, 2 bad usage,
-130 stopped by Ctrl-C), and hands the run to :mod:`game.app.run`. Installed with pip, the
-same command is ``tile-hopper``.
+sentence and an exit status (0 done, 1 a file that cannot be read or written, or no display
+for the window, 2 bad usage, 130 stopped by Ctrl-C), and hands the run to
+:mod:`game.app.run`. Installed with pip, the same command is ``tile-hopper``.
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ import sys
 from pathlib import Path
 
 from game.app.arguments import Parser, run_command, whole_number
+from game.app.display import EXIT_NO_WINDOW, GAME_INSTEAD, missing_display, no_window
 
 MAX_TICKS = 1_000_000_000  # six months of game time
 
@@ -44,15 +45,19 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _main(argv: list[str] | None) -> int:
-    args = parser().parse_args(argv)
+    options = parser()
+    args = options.parse_args(argv)
     if args.headless:  # before pygame is imported anywhere: no window, no sound card
         os.environ["SDL_VIDEODRIVER"] = "dummy"
         os.environ["SDL_AUDIODRIVER"] = "dummy"
     os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
+    if not args.headless and (why := missing_display()) is not None:  # said before pygame loads
+        print(no_window(options.prog, why, GAME_INSTEAD), file=sys.stderr)
+        return EXIT_NO_WINDOW
     from game.app.run import run
     from game.app.window import play_in_window
 
-    return run(args, play_in_window)
+    return run(args, play_in_window, options.prog)
 
 
 if __name__ == "__main__":

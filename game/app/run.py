@@ -31,6 +31,7 @@ from pathlib import Path
 
 import pygame
 
+from game.app.display import EXIT_NO_WINDOW, GAME_INSTEAD, GAME_WINDOW, open_window
 from game.app.files import (
     FileProblem,
     output_problem,
@@ -144,9 +145,22 @@ def _output_problems(args: argparse.Namespace) -> list[str]:
             and (problem := output_problem(path)) is not None]
 
 
-def run(args: argparse.Namespace, play_in_window: Callable[[Run], int]) -> int:
+def _open_display(headless: bool, program: str) -> str | None:
+    """Start the display: the game's window, or a hidden one for a headless screenshot.
+    None when it is open, else the sentence to end with (see :mod:`game.app.display`)."""
+    from game.sim.camera import VIEW_H_PX, VIEW_W_PX
+    pygame.font.init()
+    if not headless:
+        return open_window(program, GAME_WINDOW, (VIEW_W_PX, VIEW_H_PX), GAME_INSTEAD)
+    pygame.display.init()
+    pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX))
+    return None
+
+
+def run(args: argparse.Namespace, play_in_window: Callable[[Run], int],
+        program: str = "python -m game") -> int:
     """Run the game as the options ask, in a window through ``play_in_window`` unless
-    headless; return the exit status."""
+    headless; return the exit status. ``program`` is how a sentence on stderr names it."""
     problems = _output_problems(args)
     if problems:
         return fail("\n".join(problems), EXIT_BAD_FILE)
@@ -162,13 +176,9 @@ def run(args: argparse.Namespace, play_in_window: Callable[[Run], int]) -> int:
             return fail(str(error), EXIT_USAGE)
     first_level = args.level or FIRST_LEVEL
     needs_pictures = not args.headless or args.screenshot is not None
-    if needs_pictures:
-        pygame.display.init()
-        pygame.font.init()
-        flags = 0 if args.headless else pygame.SCALED | pygame.RESIZABLE
-        from game.sim.camera import VIEW_H_PX, VIEW_W_PX
-        pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX), flags)
-        pygame.display.set_caption("Tile Hopper")
+    if needs_pictures and (problem := _open_display(args.headless, program)) is not None:
+        pygame.quit()
+        return fail(problem, EXIT_NO_WINDOW)
 
     def loader(path: Path) -> Level:
         return load_level(path, images=needs_pictures)

@@ -3,8 +3,9 @@
 Where it sits: the entry point of the lab. With no option it opens a window with the list
 of scenes; ``--scene NAME`` opens that scene; ``--list`` prints the scene names, one a line;
 ``--screenshot PNG`` draws ``--frames`` frames (default 1) without any window and saves the
-last one. Exit status: 0 done, 1 the picture could not be saved, 2 bad usage (an unknown
-scene name prints the list on stderr).
+last one. Exit status: 0 done, 1 the picture could not be saved or no display for the
+window (one sentence naming ``--screenshot`` and ``--list``), 2 bad usage (an unknown scene
+name prints the list on stderr).
 
 What it teaches: a headless mode is the same loop with the window taken away. The
 screenshot runs the very frames a window would, with ``SDL_VIDEODRIVER=dummy``, so a test or
@@ -18,6 +19,7 @@ import sys
 from pathlib import Path
 
 from game.app.arguments import Parser, excerpt, whole_number
+from game.app.display import EXIT_NO_WINDOW, LAB_INSTEAD, LAB_WINDOW, open_window
 from game.app.files import output_problem
 from game.lab.catalogue import SCENES
 
@@ -63,13 +65,16 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _start_pygame(headless: bool) -> None:
+    """Fonts always; the display only when headless (a window opens through
+    :func:`game.app.display.open_window`, which checks first that it can be seen)."""
     if headless:
         os.environ["SDL_VIDEODRIVER"] = "dummy"
     os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
     os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
     import pygame
 
-    pygame.display.init()
+    if headless:
+        pygame.display.init()
     pygame.font.init()
 
 
@@ -102,13 +107,11 @@ def window(scene: str | None) -> int:
     from game.lab.scene import LAB_H_PX, LAB_W_PX
     from game.lab.testbed import Lab
 
-    try:
-        display = pygame.display.set_mode((LAB_W_PX, LAB_H_PX), pygame.SCALED | pygame.RESIZABLE)
-    except pygame.error as error:
-        print(f"python -m game.lab: cannot open a window ({error}); "
-              f"try --screenshot to draw a scene without one", file=sys.stderr)
-        return 1
-    pygame.display.set_caption("Tile Hopper: collision lab")
+    problem = open_window("python -m game.lab", LAB_WINDOW, (LAB_W_PX, LAB_H_PX), LAB_INSTEAD)
+    if problem is not None:
+        print(problem, file=sys.stderr)
+        return EXIT_NO_WINDOW
+    display = pygame.display.get_surface()
     bed = Lab(SCENES, start=scene)
     clock = pygame.time.Clock()
     while bed.running:
