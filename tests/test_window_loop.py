@@ -14,17 +14,20 @@ import pygame
 import pytest
 
 from game.app import window as window_module
+from game.app.banner import SKIP_AFTER_S
 from game.app.cli import parser
+from game.app.menus import Screen
 from game.app.run import Run
 from game.app.window import MENU_FPS, STILL_FPS, GameWindow, play_in_window
-from game.sim.campaign import Campaign
+from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, InputScript
 from tests.maps import level_from_ascii
 
 ROOT = Path(__file__).resolve().parent.parent
 WINDOW_SOURCE = ROOT / "game" / "app" / "window.py"
 LONGEST_FUNCTION_LINES = 49
-PHASES = ("events", "ticks", "banner_phase", "draw")
+PHASES = ("events", "ticks", "advance_banner", "draw")
+FRAME_S = 17 / 1000  # every frame of the steady clock
 ASKED_RATES: list[int] = []  # the frame rate each frame asked the clock for
 FLOOR = ["            ", " P          ", "############"]
 
@@ -192,3 +195,34 @@ def test_a_timed_run_leaves_a_person_s_settings_alone(
     monkeypatch.setattr(pygame.display, "toggle_fullscreen", lambda: 1)
     status, _, _ = play([[key(pygame.K_F11)]], monkeypatch, ["--ticks", "1000000"])
     assert status == 0 and not (tmp_path / "tile-hopper").exists()
+
+
+def test_the_level_end_banner_holds_the_simulation_and_enter_skips_it_only_after_a_moment(
+        display: None, monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    monkeypatch.setenv("XDG_DATA_HOME", str(tmp_path))
+    monkeypatch.setattr(window_module, "held_keys", lambda *_: frozenset({Action.RIGHT}))
+    monkeypatch.setattr(pygame.time, "Clock", SteadyClock)
+    level = level_from_ascii([" P D ", "#####"])
+    run = Run(Campaign(Path("x.tmx"), loader=lambda _: level), None,
+              parser().parse_args(["--level", "x.tmx"]))  # a person playing: progress is kept
+    game = GameWindow(run)
+    seen: list[tuple[Screen, int]] = []
+    enter = key(pygame.K_RETURN)
+    skip_at = round(SKIP_AFTER_S / FRAME_S) + 10  # a frame well after the banner may be skipped
+
+    def next_batch(*_: object, **__: object) -> list[pygame.event.Event]:
+        seen.append((game.menus.screen, run.campaign.ticks))
+        cleared = [ticks for screen, ticks in seen if screen is Screen.CLEARED]
+        assert len(seen) < 600, "the level never ended"
+        if game.menus.screen is Screen.ENDED:
+            return [pygame.event.Event(pygame.QUIT)]
+        return [enter] if len(cleared) in (1, skip_at) else []
+
+    monkeypatch.setattr(pygame.event, "get", next_batch)
+    assert game.play() == 0
+    cleared_ticks = [ticks for screen, ticks in seen if screen is Screen.CLEARED]
+    assert len(cleared_ticks) == skip_at      # the first Enter came too soon; the second skipped
+    assert len(set(cleared_ticks)) == 1       # no tick ran under the banner
+    assert seen[-1][0] is Screen.ENDED and run.campaign.outcome is Outcome.WON
+    progress = json.loads((tmp_path / "tile-hopper" / "progress.json").read_text("utf-8"))
+    assert progress != {} and str(cleared_ticks[0]) in json.dumps(progress)

@@ -124,7 +124,7 @@ class GameWindow:
     """The window's state between frames, and one method per phase of a frame.
 
     :meth:`play` runs frames until the window closes; each frame is :meth:`events`,
-    :meth:`reload_on_save`, :meth:`music`, :meth:`ticks`, :meth:`banner_phase` and
+    :meth:`reload_on_save`, :meth:`music`, :meth:`ticks`, :meth:`advance_banner` and
     :meth:`draw`, in that order (the order :mod:`game.app.run` describes)."""
 
     def __init__(self, run: Run) -> None:
@@ -172,14 +172,13 @@ class GameWindow:
             frame_s = self.clock.tick(frame_rate(self.menus.screen)) / 1000.0
             self.frame += max(1, round(frame_s * ANIMATION_HZ))  # animations keep time at any rate
             self.entries = level_entries(self.levels, self.progress)
-            status = self.events()
-            if status is None:
-                self.reload_on_save()
-                self.music()
-                status = self.ticks(frame_s)
-            if status is not None:
+            if (status := self.events()) is not None:
                 return status
-            self.banner_phase(frame_s)
+            self.reload_on_save()
+            self.music()
+            if (status := self.ticks(frame_s)) is not None:
+                return status
+            self.advance_banner(frame_s)
             self.draw()
 
     def held(self) -> Actions:
@@ -272,8 +271,10 @@ class GameWindow:
     # 2. Ticks: as many fixed 1/60 s steps as real time has paid for, each with what the
     # keyboard and the pads hold; each tick's events sound, and a finished level is saved.
     def ticks(self, frame_s: float) -> int | None:
-        """Run the ticks this frame is due; the exit status if a scripted or timed run ends."""
-        if self.menus.screen is not Screen.PLAYING:
+        """Run the ticks this frame is due; the exit status if a scripted or timed run ends.
+        None run in menus, nor under the level-end banner, even in the frame that Enter
+        skips it (the banner gives way first, in :meth:`advance_banner`)."""
+        if self.menus.screen is not Screen.PLAYING or self.banner is not None:
             self.stepper.advance(0.0)
             return None
         due = self.stepping.ticks_due(self.stepper, frame_s, overlay_on=self.debug)
@@ -318,7 +319,7 @@ class GameWindow:
         return not (run.finished() or finish is not None)
 
     # The level-end banner: a pause of the window only; the simulation waits for it.
-    def banner_phase(self, frame_s: float) -> None:
+    def advance_banner(self, frame_s: float) -> None:
         """Advance the banner's tally; when it is done (or skipped), play on or end."""
         if self.banner is None:
             return
