@@ -28,6 +28,7 @@ from pygame._sdl2.video import WINDOWPOS_CENTERED, Window
 from game.app.assets import Assets, load_assets
 from game.app.audio import Audio
 from game.app.banner import Banner
+from game.app.debug_overlay import PANEL_KEY, PanelMode
 from game.app.effects import Effects
 from game.app.frame import render_frame
 from game.app.gamepad import Gamepads, StickEdges, pad_in_use, pad_nav
@@ -125,6 +126,7 @@ def play_in_window(run: Run) -> int:
     scripted = run.script is not None
     menus = Menus(Screen.PLAYING if scripted or run.args.level else Screen.TITLE)
     debug = bool(run.args.debug)
+    panel = PanelMode.COMPACT  # the overlay's panel: F5 cycles compact, full, hidden
     frame = 0
     watcher: FileWatcher | None = None
     reload_error: str | None = None
@@ -165,6 +167,8 @@ def play_in_window(run: Run) -> int:
             if event.type == pygame.KEYDOWN and event.key == pygame.K_F1:
                 debug = not debug
                 run.campaign.measure.queries = debug  # the overlay draws the tick's query log
+            elif event.type == pygame.KEYDOWN and debug and event.key == PANEL_KEY:
+                panel = panel.next()
             elif event.type == pygame.KEYDOWN and stepping.press(event.key, overlay_on=debug):
                 pass
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_F11:
@@ -239,7 +243,8 @@ def play_in_window(run: Run) -> int:
             if run.finished() and (scripted or run.args.ticks is not None):
                 run.write_outputs(render_frame(
                     run.campaign, debug=debug, renderer=renderer, fps=clock.get_fps(),
-                    update_ms=run.last_update_ms, debug_lines=stepping.lines(run.campaign.ticks)))
+                    update_ms=run.last_update_ms, debug_lines=stepping.lines(run.campaign.ticks),
+                    panel=panel))
                 return EXIT_OK
             if banner is not None:
                 menus = cleared(menus)
@@ -263,7 +268,7 @@ def play_in_window(run: Run) -> int:
         # 3. Draw: the world, HUD and overlay (or a menu in their place), then any screen on
         # top, then a problem to report, if there is one. A still screen (pause, game over,
         # the win) is drawn once, and again only after an event or a change of what it shows.
-        shown = (menus, notice, reload_error, debug)
+        shown = (menus, notice, reload_error, debug, panel)
         if menus.screen in STILL_SCREENS and not dirty and shown == last_shown:
             continue
         dirty, last_shown = False, shown
@@ -274,7 +279,7 @@ def play_in_window(run: Run) -> int:
                          frame=run.campaign.ticks, fps=clock.get_fps(),
                          update_ms=run.last_update_ms,
                          world=banner.world if banner is not None else None,
-                         debug_lines=stepping.lines(run.campaign.ticks))
+                         debug_lines=stepping.lines(run.campaign.ticks), panel=panel)
         if banner is not None:
             banner.draw(target, assets)
         _draw_screen(target, assets, menus, entries, run.campaign, frame, using_pad)
