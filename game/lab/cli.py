@@ -1,7 +1,8 @@
 """``python -m game.lab [--list] [--scene NAME] [--screenshot PNG] [--frames N]``.
 
 Where it sits: the entry point of the lab. With no option it opens a window with the list
-of scenes; ``--scene NAME`` opens that scene; ``--list`` prints the scene names, one a line;
+of scenes; ``--scene NAME`` opens that scene; ``--list`` prints the scenes, one a line: the
+name first (so the first word of each line is a name), then its group and what it shows;
 ``--screenshot PNG`` draws ``--frames`` frames (default 1) without any window and saves the
 last one. Exit status: 0 done, 1 the picture could not be saved, 2 bad usage (an unknown
 scene name prints the list on stderr).
@@ -30,11 +31,20 @@ def scene_names() -> list[str]:
     return [scene.name for scene in SCENES]
 
 
+def listing() -> list[str]:
+    """``--list``: each scene's name, group and title, in columns, in the list's order."""
+    name_w = max(len(scene.name) for scene in SCENES)
+    group_w = max(len(scene.group) for scene in SCENES)
+    return [f"{scene.name:<{name_w}}  {scene.group:<{group_w}}  {scene.title}"
+            for scene in SCENES]
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = Parser(
         prog="python -m game.lab",
         description="Interactive scenes, one per collision technique.")
-    parser.add_argument("--list", action="store_true", help="print the scene names and exit")
+    parser.add_argument("--list", action="store_true",
+                        help="print each scene's name, group and description, and exit")
     parser.add_argument("--scene", metavar="NAME", help="open this scene")
     parser.add_argument("--screenshot", metavar="PNG", type=Path,
                         help="draw without a window and save the last frame here")
@@ -44,7 +54,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     names = scene_names()
     if args.list:
-        print("\n".join(names))
+        print("\n".join(listing()))
         return 0
     if args.scene is not None and args.scene not in names:
         print(f"python -m game.lab: there is no scene called {excerpt(args.scene)}; the scenes "
@@ -100,15 +110,16 @@ def window(scene: str | None) -> int:
     import pygame
 
     from game.lab.scene import LAB_H_PX, LAB_W_PX
-    from game.lab.testbed import Lab
+    from game.lab.testbed import Lab, fit_window
 
     try:
-        display = pygame.display.set_mode((LAB_W_PX, LAB_H_PX), pygame.SCALED | pygame.RESIZABLE)
+        display = pygame.display.set_mode((LAB_W_PX, LAB_H_PX), pygame.SCALED)
     except pygame.error as error:
         print(f"python -m game.lab: cannot open a window ({error}); "
               f"try --screenshot to draw a scene without one", file=sys.stderr)
         return 1
     pygame.display.set_caption("Tile Hopper: collision lab")
+    window = fit_window()  # held while the window is open (see game.app.window.fit_window)
     bed = Lab(SCENES, start=scene)
     clock = pygame.time.Clock()
     while bed.running:
@@ -117,4 +128,5 @@ def window(scene: str | None) -> int:
         pygame.display.flip()
         clock.tick(WINDOW_FPS)
     pygame.display.quit()
+    del window  # only now: SDL may hand it to events until the display is gone
     return 0

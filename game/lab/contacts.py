@@ -29,6 +29,10 @@ class Contacts(Scene):
     name = "contacts"
     title = "starts and ends: a log that does not flood"
     keys_help = "drag the slider or a box"
+    group = "response"
+    draws = (Layer.SHAPES, Layer.CONTACTS)
+    timing_note = ("what this scene teaches is how many lines a log writes, counted "
+                   "exactly above; a time would only measure Python's sets")
 
     def reset(self) -> None:
         self.pos = {str(i): (box.x, box.y) for i, box in enumerate(BOXES)}
