@@ -97,10 +97,10 @@ class CostMeter:
         return f"{ratio:.1f}x" if ratio >= 1 else f"{ratio:.2f}x"
 
     def text(self, label: str) -> str:
-        """``label: median (p10-p90 low-high), n measured``, ready to print ("-" before the
-        first measurement)."""
+        """``label: median (p10 to p90)``, ready to print ("-" before the first
+        measurement)."""
         if label not in self.samples:
             return f"{label}: -"
         low, high = self.spread(label)
         return (f"{label}: {format_ns(self.median(label))}"
-                f" ({format_ns(low)}-{format_ns(high)})")
+                f" ({format_ns(low)} to {format_ns(high)})")

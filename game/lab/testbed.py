@@ -59,8 +59,9 @@ MENU_ROW_PX = 26
 MENU_GROUP_X, MENU_NAME_X, MENU_TITLE_X = 24, 130, 300
 ZOOMS = (1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0)  # the wheel's steps
 PAN_BUTTONS = (2, 3)  # middle and right
-GRAPH_W_PX, GRAPH_H_PX = 96, 10  # one timing's history
-BUTTON_GAP_PX = 6
+GRAPH_W_PX, GRAPH_H_PX = 240, 14  # one timing's history
+BUTTON_GAP_PX = 5
+BUTTON_PAD_PX = 3
 HELP_Y = LAB_H_PX - 26
 KEY_Y = LAB_H_PX - 13
 
@@ -76,7 +77,8 @@ class PanelRow:
     rect: pygame.Rect
     color: canvas.Color
     action: Action | None = None
-    graph: list[float] | None = None  # a timing's history, drawn right of the words
+    graph: list[float] | None = None  # a timing's history, drawn in ``rect``
+    button: bool = False  # drawn boxed: a key's name that works as a button
 
 
 class View:
@@ -98,7 +100,8 @@ class View:
                            round(AREA.h / self.zoom))
 
     def zoom_about(self, screen_point: tuple[float, float], steps: int) -> None:
-        """Zoom by ``steps`` of :data:`ZOOMS`, keeping the scene point under the mouse put."""
+        """Zoom by ``steps`` of :data:`ZOOMS` (the wheel's clicks: up zooms in), keeping the
+        scene point under the mouse put."""
         index = min(range(len(ZOOMS)), key=lambda i: abs(ZOOMS[i] - self.zoom))
         new = ZOOMS[max(0, min(len(ZOOMS) - 1, index + steps))]
         fixed = self.to_scene(screen_point)
@@ -193,7 +196,7 @@ class Lab:
         elif event.type == pygame.KEYUP:
             scene.held.discard(event.key)
         elif event.type == pygame.MOUSEWHEEL:
-            self.view.zoom_about(self.pointer, 1 if event.y > 0 else -1)
+            self.view.zoom_about(self.pointer, event.y)
         elif event.type == pygame.MOUSEBUTTONDOWN and event.button in PAN_BUTTONS:
             self.panning = True
         elif event.type == pygame.MOUSEBUTTONUP and event.button in PAN_BUTTONS:
@@ -286,9 +289,12 @@ class Lab:
         y += step // 2
         meter = scene.meter
         if meter.labels():
-            add(f"timed here, last {meter.window} frames: median (p10-p90)", canvas.DIM)
+            add(f"timed here, last {meter.window} frames: median (p10 to p90)", canvas.DIM)
             for label in meter.labels():
-                add(f"  {meter.text(label)}", canvas.TEXT, graph=meter.history(label))
+                add(f"  {meter.text(label)}", canvas.TEXT)
+                rows.append(PanelRow("", pygame.Rect(PANEL.x + 16, y, GRAPH_W_PX, GRAPH_H_PX),
+                                     canvas.DIM, graph=meter.history(label)))
+                y += GRAPH_H_PX + 3
         else:
             for line in _wrap(f"no timing: {scene.timing_note}"):
                 add(line, canvas.DIM)
@@ -303,10 +309,12 @@ class Lab:
             rows.append(words)
             x = words.rect.right + BUTTON_GAP_PX
             for key in control.keys:
-                label = f"[{key_label(key)}]"
-                rows.append(PanelRow(label, pygame.Rect(x, y, canvas.text_width(label), step),
-                                     canvas.BOUNDS, _pressing(scene, key)))
-                x = rows[-1].rect.right + BUTTON_GAP_PX
+                label = key_label(key)
+                button = pygame.Rect(x, y - 1, canvas.text_width(label) + 2 * BUTTON_PAD_PX,
+                                     step - 2)
+                rows.append(PanelRow(label, button, canvas.BOUNDS, _pressing(scene, key),
+                                     button=True))
+                x = button.right + BUTTON_GAP_PX
             y += step
         y += step // 2
         add("layers this scene draws (click, or 1-5):", canvas.DIM)
@@ -322,7 +330,8 @@ class Lab:
         """The side panel's words, row by row (buttons on the row of their parameter)."""
         lines: dict[int, list[str]] = {}
         for row in self.panel_rows():
-            lines.setdefault(row.rect.y, []).append(row.text)
+            if row.graph is None:
+                lines.setdefault(row.rect.y + (1 if row.button else 0), []).append(row.text)
         return [" ".join(words) for _, words in sorted(lines.items())]
 
     # --- drawing -----------------------------------------------------------------------
@@ -338,10 +347,14 @@ class Lab:
             canvas.text(surface, "PAUSED", (LAB_W_PX - 80, 8), canvas.TEXT, canvas.TITLE_PT)
         self._draw_scene(surface, scene)
         for row in self.panel_rows():
-            canvas.text(surface, row.text, row.rect.topleft, row.color)
-            if row.graph:
-                _graph(surface, row.graph, pygame.Rect(PANEL.right - GRAPH_W_PX, row.rect.y + 1,
-                                                       GRAPH_W_PX, GRAPH_H_PX))
+            if row.graph is not None:
+                _graph(surface, row.graph, row.rect)
+            elif row.button:
+                pygame.draw.rect(surface, row.color, row.rect, 1)
+                canvas.text(surface, row.text, (row.rect.x + BUTTON_PAD_PX, row.rect.y + 1),
+                            row.color)
+            else:
+                canvas.text(surface, row.text, row.rect.topleft, row.color)
         canvas.text(surface, f"{scene.keys_help}  |  {COMMON_HELP}", (8, HELP_Y), canvas.DIM)
         x = 8
         for color, meaning in canvas.VERDICTS:
