@@ -560,3 +560,11 @@ def test_the_lab_adds_nothing_to_the_game() -> None:
                  and re.search(r"^\s*(from|import)\s+game\.lab", p.read_text(encoding="utf-8"),
                                re.MULTILINE)]
     assert offenders == []
+
+
+def test_the_pictures_run_long_enough_to_fill_the_timing_window() -> None:
+    from game.lab.cost import WINDOW
+    from game.tools.lab_screenshots import DEFAULT_FRAMES, FRAMES
+
+    assert DEFAULT_FRAMES == WINDOW + 1
+    assert all(frames > WINDOW for frames in FRAMES.values())

@@ -143,6 +143,9 @@ SWEEP_KEY: KeyRow = (("platform", PLATFORM_COLOR), ("sweep x", SWEEP_X_COLOR[:3]
                      ("y", SWEEP_Y_COLOR[:3]), ("hit", HIT_COLOR))
 
 
+CELL_KEY_HEADING = "squares in cells, by who looked:"
+
+
 def cell_key_rows() -> tuple[KeyRow, ...]:
     """The full key's rows for the squares inside visited cells: who asked, in its colour."""
     words = [(purpose, color) for purpose, color in CELL_COLORS.items()]
@@ -375,8 +378,7 @@ def compact_lines(world: World, fps: float | None, update_ms: float,
     """The compact panel's text: the times, the tick's cost, and the first of
     ``extra_lines`` (the window's stepping state), with the key to more detail."""
     full = panel_lines(world, fps, update_ms)
-    state = f"{extra_lines[0]}  " if extra_lines else ""
-    return full[0], full[2], f"{state}{key_label(PANEL_KEY)} more"
+    return full[0], full[2], *extra_lines[:1], f"{key_label(PANEL_KEY)} more"
 
 
 def panel_rows(world: World, fps: float | None, update_ms: float,
@@ -389,7 +391,7 @@ def panel_rows(world: World, fps: float | None, update_ms: float,
         return (*compact_lines(world, fps, update_ms, extra_lines),
                 HITBOX_KEY, TILE_KEY, SWEEP_KEY)
     return (*panel_lines(world, fps, update_ms, extra_lines), f"{key_label(PANEL_KEY)} hide",
-            HITBOX_KEY, TILE_KEY, SWEEP_KEY, *cell_key_rows())
+            HITBOX_KEY, TILE_KEY, SWEEP_KEY, CELL_KEY_HEADING, *cell_key_rows())
 
 
 def _row_faces(font: pygame.font.Font, row: Row) -> list[tuple[pygame.Surface, int]]:
