@@ -1,14 +1,14 @@
 """``python -m game.tools.lab_screenshots``: remake the README's picture of every lab scene.
 
 Where it sits: beside the game, like :mod:`game.tools.screenshots`. It asks the lab for its
-scenes (``python -m game.lab --list``, a name first on each line) and then runs, for each, the very command a reader
-could type, ``python -m game.lab --scene NAME --frames N --screenshot PNG``, printing it as it
-goes. Every scene runs long enough to fill its timing window (the medians, spreads and
-history graphs of :data:`DEFAULT_FRAMES` frames are whole); a scene that only shows something
-after more time has passed (a flight reaching its wall, a contact log filling up) gets more
-frames. The pictures
-land in ``assets/screenshots/lab/``. The lab is run as a program, never imported, so the
-tools and the lab stay apart.
+scenes (``python -m game.lab --list``, a name first on each line) and then runs, for each,
+the very command a reader could type,
+``python -m game.lab --scene NAME --frames N --screenshot PNG``, printing it as it goes.
+Every scene runs long enough to fill its timing window (the medians, spreads and history
+graphs of :data:`DEFAULT_FRAMES` frames are whole); a scene that only shows something after
+more time has passed (a flight reaching its wall, a contact log filling up) gets more frames.
+The pictures land in ``assets/screenshots/lab/``. The lab is run as a program, never
+imported, so the tools and the lab stay apart.
 """
 
 from __future__ import annotations
