@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
+from pathlib import Path
 from typing import Any
 
 import pygame
@@ -21,6 +22,7 @@ from game.lab.scene import AREA, GROUPS, Layer, Scene
 from game.lab.testbed import Lab, screen
 from game.lab.tunnelling import LANES, TICKS_PER_STEP_RUNNING, Tunnelling, verdict_color
 
+ROOT = Path(__file__).resolve().parent.parent
 NAMES = [scene.name for scene in SCENES]
 TIMING_FRAMES = 5
 
@@ -330,7 +332,10 @@ def test_party_grid_explains_its_per_test_figures_from_its_own_counts() -> None:
     text = " ".join(scene.status())
     fewer = scene.brute_tests / scene.grid_tests
     assert f"it makes {fewer:.0f}x fewer tests" in text
-    assert "as the grid also files boxes and walks cells" in text
+    per_grid = scene.meter.median("grid, all pairs") / scene.grid_tests
+    per_brute = scene.meter.median("brute force, all pairs") / scene.brute_tests
+    assert ("as the grid also files boxes and walks cells" in text) == (per_grid > per_brute)
+    assert f"a grid test costs {per_grid / per_brute:.1f}x a brute one" in text
 
 
 def test_tunnelling_says_it_runs_in_slow_motion_and_does() -> None:
@@ -354,3 +359,15 @@ def test_tunnelling_colours_exact_approximate_right_and_approximate_wrong_apart(
     assert len({canvas.EXACT, canvas.APPROX_RIGHT, canvas.WRONG}) == 3
     assert [color for color, _ in canvas.VERDICTS] == [canvas.EXACT, canvas.APPROX_RIGHT,
                                                       canvas.WRONG]
+
+
+def test_the_party_grid_picture_says_what_the_readme_says() -> None:
+    """The README quotes the party-grid picture's ratio of tests; counts are exact, and the
+    crowd drifts the same way every run."""
+    bed = Lab(SCENES, start="party-grid")
+    for _ in range(121):  # as game.tools.lab_screenshots draws it
+        bed.frame()
+    assert bed.scene is not None
+    assert any("it makes 22x fewer tests" in line for line in bed.scene.status())
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert "(22x fewer in the picture)" in readme

@@ -147,3 +147,21 @@ def test_the_player_is_drawn_above_the_outlines_only_the_hitboxes_cross_him(
                 checked += 1
         assert hidden == [], (level, campaign.ticks, player_on_screen(world))
     assert checked > 0
+
+
+def test_the_readme_gives_the_compact_panels_size_as_measured(assets: Assets) -> None:
+    """The README's figures for the compact panel in a 1600x900 window, worked out again."""
+    frame, campaign = next(iter(played("01-first-steps", assets)))
+    world = campaign.world
+    scale = window_scale(DESKTOP)
+    window = draw_debug(frame, world, assets, 59.5, 1.25,
+                        ("frozen at tick 12345", "F2 freeze F3 step F4 slow"))
+    picture = draw_debug(frame, world, assets, None, 1.25)
+    view = VIEW_W_PX * VIEW_H_PX
+
+    def share(rect: pygame.Rect) -> str:
+        return f"{rect.w * rect.h / view:.1%}".replace("%", " %")
+
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert (f"it takes {window.w * scale}x{window.h * scale} pixels, {share(window)} of the view"
+            f" ({share(picture)} in the pictures below") in " ".join(readme.split())
