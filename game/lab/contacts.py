@@ -88,4 +88,4 @@ class Contacts(Scene):
                 canvas.box(surface, boxes[key], canvas.EXACT, 3)
         fresh = [e for e in self.tracker.log if e.tick == self.tracker.tick]
         for row, event in enumerate(fresh):
-            canvas.text(surface, str(event), (AREA.x + 16, AREA.y + 16 + row * 20), canvas.BOUNDS)
+            canvas.text(surface, str(event), (AREA.x + 16, AREA.y + 16 + row * 20), canvas.TEXT)
