@@ -14,12 +14,13 @@ from typing import Any
 import pygame
 import pytest
 
+from game.app.window import DESKTOP_SHARE_PERCENT
 from game.lab import canvas
 from game.lab.catalogue import SCENES
 from game.lab.overlap import WALL, Overlap, collision_status
 from game.lab.party_grid import PartyGrid
-from game.lab.scene import AREA, GROUPS, Layer, Scene
-from game.lab.testbed import Lab, screen
+from game.lab.scene import AREA, GROUPS, LAB_H_PX, LAB_W_PX, Layer, Scene
+from game.lab.testbed import Lab, fit_window, screen, window_size
 from game.lab.tunnelling import LANES, TICKS_PER_STEP_RUNNING, Tunnelling, verdict_color
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -371,3 +372,27 @@ def test_the_party_grid_picture_says_what_the_readme_says() -> None:
     assert any("it makes 22x fewer tests" in line for line in bed.scene.status())
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     assert "(22x fewer in the picture)" in readme
+
+
+# --- the window ----------------------------------------------------------------------------
+@pytest.mark.parametrize("desktop", [(1920, 1080), (1280, 720), (2560, 1440), (3840, 2160)])
+def test_the_lab_window_fits_inside_ninety_percent_of_the_desktop_like_the_game(
+        desktop: tuple[int, int]) -> None:
+    size = window_size(desktop)
+    assert size[0] * LAB_H_PX == size[1] * LAB_W_PX and size[0] % LAB_W_PX == 0  # whole scale
+    if size != (LAB_W_PX, LAB_H_PX):  # a 1x window is kept even on a small desktop
+        assert all(s * 100 <= d * DESKTOP_SHARE_PERCENT for s, d in zip(size, desktop,
+                                                                         strict=True))
+    bigger = (size[0] + LAB_W_PX, size[1] + LAB_H_PX)
+    assert any(s * 100 > d * DESKTOP_SHARE_PERCENT for s, d in zip(bigger, desktop, strict=True))
+
+
+def test_fitting_sizes_the_lab_window_for_its_desktop() -> None:
+    pygame.display.quit()  # a scaled window is made afresh, as the lab's own is
+    pygame.display.init()
+    pygame.display.set_mode((LAB_W_PX, LAB_H_PX), pygame.SCALED)
+    window = fit_window()
+    desktop = pygame.display.get_desktop_sizes()[window.display_index]
+    assert tuple(window.size) == window_size(desktop)
+    pygame.display.quit()
+    pygame.display.init()
