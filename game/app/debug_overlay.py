@@ -357,11 +357,10 @@ def panel_lines(world: World, fps: float | None, update_ms: float,
     """What the panel says, line by line (the arguments are :func:`draw_debug`'s)."""
     player, stats = world.player, world.stats
     ground = "ground" if player.on_ground else "air"
-    frames = "no window" if fps is None else f"FPS {fps:4.1f}"  # a picture has no frame rate
     return (
-        f"{frames}  tick {update_ms:4.2f} ms",
+        _times_line(fps, update_ms),
         f"collide {stats.collision_s * MS_PER_S:4.2f} ms",
-        f"{stats.shapes_tested} shapes in {stats.cells_visited} cells",
+        _cost_line(world),
         (f"{len(world.query_log.queries)} lookups, all drawn" if world.measure.queries
          else "lookups not recorded"),
         f"x {player.box.x:.1f} y {player.box.y:.1f} {ground}",
@@ -373,12 +372,23 @@ def panel_lines(world: World, fps: float | None, update_ms: float,
     )
 
 
+def _times_line(fps: float | None, update_ms: float) -> str:
+    """``FPS 59.5  tick 0.42 ms``: the panel's first line in every mode."""
+    frames = "no window" if fps is None else f"FPS {fps:4.1f}"  # a picture has no frame rate
+    return f"{frames}  tick {update_ms:4.2f} ms"
+
+
+def _cost_line(world: World) -> str:
+    """``12 shapes in 9 cells``: what the whole tick's lookups did."""
+    return f"{world.stats.shapes_tested} shapes in {world.stats.cells_visited} cells"
+
+
 def compact_lines(world: World, fps: float | None, update_ms: float,
                   extra_lines: Sequence[str] = ()) -> tuple[str, ...]:
     """The compact panel's text: the times, the tick's cost, and the first of
     ``extra_lines`` (the window's stepping state), with the key to more detail."""
-    full = panel_lines(world, fps, update_ms)
-    return full[0], full[2], *extra_lines[:1], f"{key_label(PANEL_KEY)} more"
+    return (_times_line(fps, update_ms), _cost_line(world), *extra_lines[:1],
+            f"{key_label(PANEL_KEY)} more")
 
 
 def panel_rows(world: World, fps: float | None, update_ms: float,
