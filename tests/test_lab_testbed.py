@@ -390,7 +390,7 @@ def test_the_lab_window_fits_inside_ninety_percent_of_the_desktop_like_the_game(
 def test_fitting_sizes_the_lab_window_for_its_desktop() -> None:
     pygame.display.quit()  # a scaled window is made afresh, as the lab's own is
     pygame.display.init()
-    pygame.display.set_mode((LAB_W_PX, LAB_H_PX), pygame.SCALED)
+    pygame.display.set_mode((LAB_W_PX, LAB_H_PX), pygame.SCALED | pygame.RESIZABLE)
     window = fit_window()
     desktop = pygame.display.get_desktop_sizes()[window.display_index]
     assert tuple(window.size) == window_size(desktop)

@@ -113,7 +113,7 @@ def window(scene: str | None) -> int:
     from game.lab.testbed import Lab, fit_window
 
     try:
-        display = pygame.display.set_mode((LAB_W_PX, LAB_H_PX), pygame.SCALED)
+        display = pygame.display.set_mode((LAB_W_PX, LAB_H_PX), pygame.SCALED | pygame.RESIZABLE)
     except pygame.error as error:
         print(f"python -m game.lab: cannot open a window ({error}); "
               f"try --screenshot to draw a scene without one", file=sys.stderr)
