@@ -4,8 +4,8 @@
 long way round: every lookup's cells, every sweep and every square, in sight or not, one
 rectangle at a time. Nothing is skipped or reused between frames, so it is plainly what the
 README describes; the tests compare the two pixel for pixel. The colours, the panel (its
-text, its cached lines and its drawing) and the layer the translucent fills are blended on
-(``Wash``) come from the game's module.
+text, its cached lines and its drawing), the player's picture drawn again and the layer the
+translucent fills are blended on (``Wash``) come from the game's module.
 
 It is the overlay as it was drawn before the game learnt to skip what is out of sight,
 with the two slips it then made at the edge of the screen put right (the game's overlay no
@@ -43,9 +43,12 @@ from game.app.debug_overlay import (
     SWEEP_X_COLOR,
     SWEEP_Y_COLOR,
     Checked,
+    PanelMode,
     Wash,
     _draw_panel,
-    panel_lines,
+    draw_player_again,
+    panel_rows,
+    player_on_screen,
 )
 from game.app.hud import Color
 from game.app.render import screen_offset
@@ -137,7 +140,8 @@ def _hitboxes(target: pygame.Surface, world: World) -> None:
 
 def draw_debug_plainly(target: pygame.Surface, world: World, assets: Assets,
                        fps: float | None, update_ms: float,
-                       extra_lines: Sequence[str] = ()) -> None:
+                       extra_lines: Sequence[str] = (),
+                       panel: PanelMode = PanelMode.COMPACT) -> None:
     """The overlay for the last tick, drawn the plain way (arguments as ``draw_debug``)."""
     wash = Wash()
     squares, outlines = _tested(wash, world)
@@ -158,5 +162,7 @@ def draw_debug_plainly(target: pygame.Surface, world: World, assets: Assets,
         _fill(target, HIT_EDGE_COLOR, bar.inflate(2 * HIT_EDGE_PX, 2 * HIT_EDGE_PX))
     for bar in bars:
         _fill(target, HIT_COLOR, bar)
+    draw_player_again(target, world, screen_offset(world.camera))
     _hitboxes(target, world)
-    _draw_panel(target, panel_lines(world, fps, update_ms, extra_lines), assets.small_font)
+    _draw_panel(target, panel_rows(world, fps, update_ms, extra_lines, panel), assets.small_font,
+                player_on_screen(world))

@@ -32,7 +32,8 @@ BIGGER_TARGET = (357, 203)  # wider and taller than the camera's view, by no who
 FALL_PX_PER_TICK = 10 * TILE
 BLACK = pygame.Color(0, 0, 0)
 
-# A shaft 40 tiles deep at the right of a wide map, so the panel (top left) covers none of it.
+# A shaft 40 tiles deep at the right of a wide map, so the panel (on the left, away from the
+# player) covers none of it.
 SHAFT = ["#" * 24 + ".P." + "#" * 3, *(["#" * 24 + "..." + "#" * 3] * 38), "#" * 30]
 FLOOR = ["            ", "            ", "        P   ", "############"]
 

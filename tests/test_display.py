@@ -7,6 +7,7 @@ The programs run as subprocesses with ``DISPLAY``, ``WAYLAND_DISPLAY`` and
 
 from __future__ import annotations
 
+import gc
 import os
 import subprocess
 import sys
@@ -109,6 +110,8 @@ def chosen_dummy_driver(monkeypatch: pytest.MonkeyPatch) -> Iterator[None]:
     monkeypatch.setenv("SDL_VIDEODRIVER", "dummy")
     for variable in CLASS_VARIABLES:
         monkeypatch.delenv(variable, raising=False)
+    pygame.display.quit()  # a window made afresh, whatever an earlier test left open
+    gc.collect()  # and no window object of an earlier test still holding SDL's renderer
     yield
     pygame.display.quit()
 

@@ -37,7 +37,7 @@ from game.lab.polygons import Polygons
 from game.lab.quadtree import QuadtreeScene
 from game.lab.response import ARENA, Response
 from game.lab.rotated_box import RotatedBox
-from game.lab.scene import Layer, Scene
+from game.lab.scene import GROUPS, Layer, Scene
 from game.lab.screen_grid import ScreenGrid
 from game.lab.sort_and_sweep import SortAndSweepScene
 from game.lab.testbed import Lab
@@ -112,13 +112,26 @@ def centre(box: Box) -> tuple[float, float]:
 
 
 # --- the command line ---------------------------------------------------------------------
-def test_list_names_at_least_twelve_scenes_in_letters_digits_and_hyphens(
+def test_list_prints_bare_names_one_a_line_for_a_script(
         capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["--list"]) == 0
-    names = capsys.readouterr().out.split()
+    assert main(["--list"]) == 0  # captured: not a terminal, so the public one-name-a-line form
+    rows = capsys.readouterr().out.splitlines()
+    assert rows == NAMES
+    assert all(re.fullmatch(r"[A-Za-z0-9-]+", row) for row in rows)
+
+
+def test_list_long_names_at_least_twelve_scenes_each_first_on_its_line_with_group_and_title(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["--list", "--long"]) == 0
+    rows = capsys.readouterr().out.splitlines()
+    names = [row.split()[0] for row in rows]
     assert names == NAMES
     assert len(names) >= 12 and len(set(names)) == len(names)
     assert all(re.fullmatch(r"[A-Za-z0-9-]+", name) for name in names)
+    for row, scene in zip(rows, SCENES, strict=True):
+        assert row.split(None, 1)[1].split() == f"{scene.group} {scene.title}".split()
+    assert [scene.group for scene in SCENES] == sorted(
+        (scene.group for scene in SCENES), key=GROUPS.index)  # the list keeps groups together
 
 
 def test_an_unknown_scene_is_bad_usage_with_the_list_on_stderr() -> None:
@@ -204,12 +217,12 @@ def test_pause_single_step_and_restart() -> None:
 
 
 def test_number_keys_switch_the_debug_layers() -> None:
-    bed, _ = open_scene("rotated-box")
-    assert Layer.BOUNDS in bed.layers
+    bed, scene = open_scene("rotated-box")
+    assert Layer.BOUNDS in scene.layers
     key(bed, pygame.K_2)
-    assert Layer.BOUNDS not in bed.layers
+    assert Layer.BOUNDS not in scene.layers
     key(bed, pygame.K_2)
-    assert Layer.BOUNDS in bed.layers
+    assert Layer.BOUNDS in scene.layers
 
 
 @pytest.mark.parametrize("name", NAMES)
@@ -371,7 +384,8 @@ def test_party_grid_hover_shows_the_query_the_grid_really_made() -> None:
     n = len(scene.crowd.boxes)
     # The query tests the hovered body and every body sharing one of its cells, once each.
     assert scene.query_tests == len(scene.neighbours) + 1
-    assert f"  tests {scene.query_tests} bodies (itself too)," in scene.status()
+    tested = "1 body" if scene.query_tests == 1 else f"{scene.query_tests} bodies"
+    assert f"  tests {tested} (itself too)," in scene.status()
     assert scene.hover_cells == list(scene.grid.cell_range(body).cells())
     assert scene.pairs == scene.brute_pairs
     assert scene.brute_tests == n * (n - 1) // 2
@@ -554,3 +568,11 @@ def test_the_lab_adds_nothing_to_the_game() -> None:
                  and re.search(r"^\s*(from|import)\s+game\.lab", p.read_text(encoding="utf-8"),
                                re.MULTILINE)]
     assert offenders == []
+
+
+def test_the_pictures_run_long_enough_to_fill_the_timing_window() -> None:
+    from game.lab.cost import WINDOW
+    from game.tools.lab_screenshots import DEFAULT_FRAMES, FRAMES
+
+    assert DEFAULT_FRAMES == WINDOW + 1
+    assert all(frames > WINDOW for frames in FRAMES.values())

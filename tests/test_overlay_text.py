@@ -7,6 +7,7 @@ import pytest
 
 from game.app import debug_overlay
 from game.app.frame import render_frame
+from game.app.hud import Color
 from game.levels import FIRST_LEVEL, load_level
 from game.sim.campaign import Campaign
 
@@ -20,9 +21,10 @@ def test_the_panel_shows_a_frame_rate_only_when_a_window_measured_one(
     shown: list[str] = []
     face = debug_overlay._line_face
 
-    def record(font: pygame.font.Font, line: str) -> pygame.Surface:
+    def record(font: pygame.font.Font, line: str,
+               color: Color = debug_overlay.PANEL_TEXT) -> pygame.Surface:
         shown.append(line)
-        return face(font, line)
+        return face(font, line, color)
 
     monkeypatch.setattr(debug_overlay, "_line_face", record)
     campaign = Campaign(FIRST_LEVEL, loader=lambda p: load_level(p, images=True))

@@ -150,7 +150,7 @@ def test_a_screenshot_at_the_end_of_a_window_run_shows_the_panel_the_window_show
     panels: list[tuple[float | None, float]] = []
 
     def recording(target: pygame.Surface, world: object, assets: object, fps: float | None,
-                  update_ms: float, lines: object = ()) -> None:
+                  update_ms: float, lines: object = (), panel: object = None) -> None:
         panels.append((fps, update_ms))
 
     monkeypatch.setattr(frame_module, "draw_debug", recording)

@@ -25,6 +25,13 @@ What it teaches (read the colours):
     thin purple sweep hitting the floor every tick: gravity pulls, the floor stops it.
   * **The cost.** "N shapes in M cells" is what the whole tick's lookups did.
 
+The panel informs without covering (:class:`PanelMode`, cycled with F5): compact by default
+(the frame and tick times, the tick's cost, the stepping state, and the colour key, each
+word in the colour it names), full detail one key away, or hidden. It sits in the corner of
+the view diagonally opposite the player (:func:`panel_rect`), on translucent glass, and the
+player's picture is drawn again above the washes and outlines, under his own green hitbox,
+so he stays readable however many cells his lookups visited.
+
 How it stays cheaper than the frame under it (``python -m game.bench.drawing`` times both):
   * **Draw only what can show.** The tick looks all over the map (every enemy moves and
     looks ahead), but the screen shows a few cells of it: of each lookup in the log only
@@ -41,6 +48,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Sequence
+from enum import Enum
 from functools import lru_cache
 
 import pygame
@@ -48,6 +56,7 @@ import pygame
 from game.app.assets import Assets
 from game.app.hud import HUD_BAR_H_PX, SMALL_TEXT_ANTIALIAS, Color
 from game.app.render import screen_offset
+from game.app.stepping import key_label
 from game.collision.aabb import Box
 from game.collision.contacts import Change, ContactEvent
 from game.sim.movement import Side
@@ -96,10 +105,51 @@ PANEL_COLOR: Color = (0, 0, 0)
 PANEL_ALPHA = 160  # 0..255: how dark the panel's glass is
 PANEL_TEXT: Color = (230, 236, 255)
 PANEL_PAD_PX = 3
-PANEL_GAP_PX = 2  # between the HUD bar and the panel
+PANEL_GAP_PX = 2  # between the panel and the HUD bar, or the view's edge
+KEY_WORD_GAP_PX = 4  # between the coloured words of a key row
+PANEL_KEY = pygame.K_F5  # cycle the panel: compact, full, hidden
 MS_PER_S = 1000.0
 CONTACT_LINES = 3  # the last few contact starts and ends, from the world's tracker
 TEXT_CACHE_LINES = 128  # rendered panel lines (and backings) kept for the next frames
+
+
+class PanelMode(Enum):
+    """How much the panel shows: a few lines (the start), everything, or nothing."""
+
+    COMPACT = "compact"
+    FULL = "full"
+    HIDDEN = "hidden"
+
+    def next(self) -> PanelMode:
+        """The mode :data:`PANEL_KEY` switches to.
+
+        >>> [mode.next().value for mode in PanelMode]
+        ['full', 'hidden', 'compact']
+        """
+        modes = list(PanelMode)
+        return modes[(modes.index(self) + 1) % len(modes)]
+
+
+KeyRow = tuple[tuple[str, Color], ...]  # a row of the colour key: words, each in its colour
+Row = str | KeyRow  # a panel row: plain text, or a row of the key
+
+# The colour key, as the panel shows it: what each outline and wash means.
+HITBOX_KEY: KeyRow = (("player", PLAYER_COLOR), ("enemy", ENEMY_COLOR), ("coin", COIN_COLOR),
+                      ("exit", EXIT_COLOR))
+TILE_KEY: KeyRow = (("solid", SHAPE_COLORS[TileKind.SOLID]),
+                    ("one-way", SHAPE_COLORS[TileKind.ONE_WAY]),
+                    ("hazard", SHAPE_COLORS[TileKind.HAZARD]))
+SWEEP_KEY: KeyRow = (("platform", PLATFORM_COLOR), ("sweep x", SWEEP_X_COLOR[:3]),
+                     ("y", SWEEP_Y_COLOR[:3]), ("hit", HIT_COLOR))
+
+
+CELL_KEY_HEADING = "squares in cells, by who looked:"
+
+
+def cell_key_rows() -> tuple[KeyRow, ...]:
+    """The full key's rows for the squares inside visited cells: who asked, in its colour."""
+    words = [(purpose, color) for purpose, color in CELL_COLORS.items()]
+    return tuple(tuple(words[i:i + 2]) for i in range(0, len(words), 2))
 
 
 CellBlock = tuple[int, int, int, int]  # first_col, last_col, first_row, last_row (inclusive)
@@ -307,11 +357,10 @@ def panel_lines(world: World, fps: float | None, update_ms: float,
     """What the panel says, line by line (the arguments are :func:`draw_debug`'s)."""
     player, stats = world.player, world.stats
     ground = "ground" if player.on_ground else "air"
-    frames = "no window" if fps is None else f"FPS {fps:4.1f}"  # a picture has no frame rate
     return (
-        f"{frames}  tick {update_ms:4.2f} ms",
+        _times_line(fps, update_ms),
         f"collide {stats.collision_s * MS_PER_S:4.2f} ms",
-        f"{stats.shapes_tested} shapes in {stats.cells_visited} cells",
+        _cost_line(world),
         (f"{len(world.query_log.queries)} lookups, all drawn" if world.measure.queries
          else "lookups not recorded"),
         f"x {player.box.x:.1f} y {player.box.y:.1f} {ground}",
@@ -323,23 +372,92 @@ def panel_lines(world: World, fps: float | None, update_ms: float,
     )
 
 
-def _draw_panel(target: pygame.Surface, lines: Sequence[str], font: pygame.font.Font) -> None:
-    """The lines on dark glass below the HUD bar: the backing and every line in one call."""
+def _times_line(fps: float | None, update_ms: float) -> str:
+    """``FPS 59.5  tick 0.42 ms``: the panel's first line in every mode."""
+    frames = "no window" if fps is None else f"FPS {fps:4.1f}"  # a picture has no frame rate
+    return f"{frames}  tick {update_ms:4.2f} ms"
+
+
+def _cost_line(world: World) -> str:
+    """``12 shapes in 9 cells``: what the whole tick's lookups did."""
+    return f"{world.stats.shapes_tested} shapes in {world.stats.cells_visited} cells"
+
+
+def compact_lines(world: World, fps: float | None, update_ms: float,
+                  extra_lines: Sequence[str] = ()) -> tuple[str, ...]:
+    """The compact panel's text: the times, the tick's cost, and the first of
+    ``extra_lines`` (the window's stepping state), with the key to more detail."""
+    return (_times_line(fps, update_ms), _cost_line(world), *extra_lines[:1],
+            f"{key_label(PANEL_KEY)} more")
+
+
+def panel_rows(world: World, fps: float | None, update_ms: float,
+               extra_lines: Sequence[str] = (),
+               mode: PanelMode = PanelMode.COMPACT) -> tuple[Row, ...]:
+    """Every row the panel shows in ``mode``: its text, then the colour key."""
+    if mode is PanelMode.HIDDEN:
+        return ()
+    if mode is PanelMode.COMPACT:
+        return (*compact_lines(world, fps, update_ms, extra_lines),
+                HITBOX_KEY, TILE_KEY, SWEEP_KEY)
+    return (*panel_lines(world, fps, update_ms, extra_lines), f"{key_label(PANEL_KEY)} hide",
+            HITBOX_KEY, TILE_KEY, SWEEP_KEY, CELL_KEY_HEADING, *cell_key_rows())
+
+
+def _row_faces(font: pygame.font.Font, row: Row) -> list[tuple[pygame.Surface, int]]:
+    """A row's rendered pieces and each one's x from the row's left."""
+    if isinstance(row, str):
+        return [(_line_face(font, row), 0)]
+    faces, x = [], 0
+    for word, color in row:
+        face = _line_face(font, word, color)
+        faces.append((face, x))
+        x += face.get_width() + KEY_WORD_GAP_PX
+    return faces
+
+
+def panel_rect(rows: Sequence[Row], font: pygame.font.Font, view: pygame.Rect,
+               player_at: tuple[int, int]) -> pygame.Rect:
+    """Where the panel goes: in the corner of ``view`` diagonally opposite ``player_at``
+    (the player's middle, on screen), under the HUD bar when at the top. Empty when there
+    are no rows."""
+    if not rows:
+        return pygame.Rect(view.left, view.top, 0, 0)
+    width = max(face.get_width() + x for row in rows for face, x in _row_faces(font, row))
+    size = (width + 2 * PANEL_PAD_PX, len(rows) * font.get_linesize() + 2 * PANEL_PAD_PX)
+    panel = pygame.Rect((0, 0), size)
+    play_top = view.top + HUD_BAR_H_PX
+    if player_at[0] >= view.centerx:
+        panel.left = view.left
+    else:
+        panel.right = view.right
+    if player_at[1] >= (play_top + view.bottom) // 2:
+        panel.top = play_top + PANEL_GAP_PX
+    else:
+        panel.bottom = view.bottom - PANEL_GAP_PX
+    return panel
+
+
+def _draw_panel(target: pygame.Surface, rows: Sequence[Row], font: pygame.font.Font,
+                player_at: tuple[int, int]) -> pygame.Rect:
+    """The rows on dark glass in the corner away from the player (:func:`panel_rect`): the
+    backing and every piece in one call. Returns where the panel went."""
+    panel = panel_rect(rows, font, target.get_rect(), player_at)
+    if not rows:
+        return panel
     line_h = font.get_linesize()
-    faces = [_line_face(font, line) for line in lines]
-    width = max(face.get_width() for face in faces) + 2 * PANEL_PAD_PX
-    panel = pygame.Rect(0, HUD_BAR_H_PX + PANEL_GAP_PX, width,
-                        len(lines) * line_h + 2 * PANEL_PAD_PX)
     left, top = panel.left + PANEL_PAD_PX, panel.top + PANEL_PAD_PX
     target.blits([(_panel_backing(panel.size), panel.topleft),
-                  *((face, (left, top + i * line_h)) for i, face in enumerate(faces))],
+                  *((face, (left + x, top + i * line_h))
+                    for i, row in enumerate(rows) for face, x in _row_faces(font, row))],
                  doreturn=False)
+    return panel
 
 
 @lru_cache(maxsize=TEXT_CACHE_LINES)
-def _line_face(font: pygame.font.Font, line: str) -> pygame.Surface:
-    """One line of panel text, rendered once and kept while it keeps being shown."""
-    return font.render(line, SMALL_TEXT_ANTIALIAS, PANEL_TEXT)
+def _line_face(font: pygame.font.Font, line: str, color: Color = PANEL_TEXT) -> pygame.Surface:
+    """One line (or word) of panel text, rendered once and kept while it keeps being shown."""
+    return font.render(line, SMALL_TEXT_ANTIALIAS, color)
 
 
 @lru_cache(maxsize=TEXT_CACHE_LINES)
@@ -353,8 +471,10 @@ def _panel_backing(size: tuple[int, int]) -> pygame.Surface:
 
 
 def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float | None,
-               update_ms: float, extra_lines: Sequence[str] = ()) -> None:
-    """Draw the overlay for the last tick: checked tiles, sweeps, hitboxes, and the numbers.
+               update_ms: float, extra_lines: Sequence[str] = (),
+               panel: PanelMode = PanelMode.COMPACT) -> pygame.Rect:
+    """Draw the overlay for the last tick: checked tiles, sweeps, the player's picture again,
+    the hitboxes, and the panel (in ``panel`` mode). Returns where the panel went.
 
     ``fps`` is the window's measured frame rate, None for a picture made without a window
     (the panel then says so); ``update_ms`` is how long the last frame's ticks took, in
@@ -376,5 +496,20 @@ def draw_debug(target: pygame.Surface, world: World, assets: Assets, fps: float 
         _fill(target, HIT_EDGE_COLOR, bar.inflate(2 * HIT_EDGE_PX, 2 * HIT_EDGE_PX))
     for bar in bars:
         _fill(target, HIT_COLOR, bar)
+    draw_player_again(target, world, offset)
     _draw_hitboxes(target, world, clip, offset)
-    _draw_panel(target, panel_lines(world, fps, update_ms, extra_lines), assets.small_font)
+    return _draw_panel(target, panel_rows(world, fps, update_ms, extra_lines, panel),
+                       assets.small_font, player_on_screen(world))
+
+
+def player_on_screen(world: World) -> tuple[int, int]:
+    """The middle of the player's hitbox, in screen pixels: the panel keeps away from it."""
+    return _screen_rect(world.player.box, *screen_offset(world.camera)).center
+
+
+def draw_player_again(target: pygame.Surface, world: World, offset: tuple[int, int]) -> None:
+    """The player's picture, as the frame drew it, again over the washes and outlines (a
+    player with no picture yet, in a test, has none to draw)."""
+    player = world.player
+    if player.strip is not None:
+        target.blit(player.image, player.rect.move(-offset[0], -offset[1]))

@@ -11,7 +11,7 @@ from collections.abc import Sequence
 import pygame
 
 from game.app.assets import Assets, load_assets
-from game.app.debug_overlay import draw_debug
+from game.app.debug_overlay import PanelMode, draw_debug
 from game.app.hud import draw_hud
 from game.app.render import WorldRenderer
 from game.sim.campaign import Campaign
@@ -21,12 +21,14 @@ from game.sim.world import World
 def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = None,
                  renderer: WorldRenderer | None = None, frame: int = 0, fps: float | None = None,
                  update_ms: float = 0.0, world: World | None = None,
-                 debug_lines: Sequence[str] = ()) -> pygame.Surface:
+                 debug_lines: Sequence[str] = (),
+                 panel: PanelMode = PanelMode.COMPACT) -> pygame.Surface:
     """Draw the current state of play on the display surface and return it: the campaign's
     world, or ``world`` (a level just finished, still on screen under its banner).
 
     A window passes the same ``renderer`` every frame, so its caches last; without one, a
-    renderer is made for this frame alone (a screenshot).
+    renderer is made for this frame alone (a screenshot). ``panel`` is how much of the
+    overlay's panel shows (F5 in the window).
     """
     target = pygame.display.get_surface()
     if renderer is None:
@@ -36,5 +38,5 @@ def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = Non
     renderer.draw(target, world, frame or campaign.ticks)
     draw_hud(target, campaign, assets, world)
     if debug:
-        draw_debug(target, world, assets, fps, update_ms, debug_lines)
+        draw_debug(target, world, assets, fps, update_ms, debug_lines, panel)
     return target

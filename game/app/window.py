@@ -32,6 +32,7 @@ from pygame._sdl2.video import WINDOWPOS_CENTERED, Window
 from game.app.assets import Assets, load_assets
 from game.app.audio import Audio
 from game.app.banner import Banner
+from game.app.debug_overlay import PANEL_KEY, PanelMode
 from game.app.effects import Effects
 from game.app.frame import render_frame
 from game.app.gamepad import Gamepads, StickEdges, pad_in_use, pad_nav
@@ -137,6 +138,7 @@ class GameWindow:
         self.scripted = run.script is not None
         self.menus = Menus(Screen.PLAYING if self.scripted or run.args.level else Screen.TITLE)
         self.debug = bool(run.args.debug)
+        self.panel = PanelMode.COMPACT  # the overlay's panel: F5 cycles compact, full, hidden
         self.frame = 0  # animation frames of the menus, counted at ANIMATION_HZ
         self.watcher: FileWatcher | None = None
         self.reload_error: str | None = None
@@ -164,7 +166,7 @@ class GameWindow:
         self.attempt = Attempt()
         self.banner: Banner | None = None
         self.dirty = True  # a still screen is drawn again after any event (see draw)
-        self.last_shown: tuple[Menus, str | None, str | None, bool] | None = None
+        self.last_shown: tuple[Menus, str | None, str | None, bool, PanelMode] | None = None
 
     def play(self) -> int:
         """Run frames until the window closes or a scripted run ends; the exit status."""
@@ -210,6 +212,8 @@ class GameWindow:
             if event.type == pygame.KEYDOWN and event.key == pygame.K_F1:
                 self.debug = not self.debug
                 self.run.campaign.measure.queries = self.debug  # the overlay draws the query log
+            elif event.type == pygame.KEYDOWN and self.debug and event.key == PANEL_KEY:
+                self.panel = self.panel.next()
             elif event.type == pygame.KEYDOWN and self.stepping.press(event.key,
                                                                       overlay_on=self.debug):
                 pass
@@ -288,7 +292,8 @@ class GameWindow:
         if run.finished() and (self.scripted or run.args.ticks is not None):
             run.write_outputs(render_frame(
                 run.campaign, debug=self.debug, renderer=self.renderer, fps=self.clock.get_fps(),
-                update_ms=run.last_update_ms, debug_lines=self.stepping.lines(run.campaign.ticks)))
+                update_ms=run.last_update_ms, debug_lines=self.stepping.lines(run.campaign.ticks),
+                panel=self.panel))
             return EXIT_OK
         if self.banner is not None:
             self.menus = cleared(self.menus)
@@ -339,7 +344,7 @@ class GameWindow:
     def draw(self) -> None:
         """Draw the frame and show it. A still screen (pause, game over, the win) is drawn
         once, and again only after an event or a change of what it shows."""
-        shown = (self.menus, self.notice, self.reload_error, self.debug)
+        shown = (self.menus, self.notice, self.reload_error, self.debug, self.panel)
         if self.menus.screen in STILL_SCREENS and not self.dirty and shown == self.last_shown:
             return
         self.dirty, self.last_shown = False, shown
@@ -351,7 +356,7 @@ class GameWindow:
                          frame=campaign.ticks, fps=self.clock.get_fps(),
                          update_ms=self.run.last_update_ms,
                          world=self.banner.world if self.banner is not None else None,
-                         debug_lines=self.stepping.lines(campaign.ticks))
+                         debug_lines=self.stepping.lines(campaign.ticks), panel=self.panel)
         if self.banner is not None:
             self.banner.draw(target, self.assets)
         _draw_screen(target, self.assets, self.menus, self.entries, campaign, self.frame,

@@ -6,8 +6,10 @@ Text is drawn in the game's own pixel font, unsmoothed, so it stays crisp at any
 
 What it teaches: one colour per role, the same in every scene, so a reader learns the code
 once: red is the thing you move, blue the thing it meets, yellow a bounding box (the cheap
-answer), green "the exact test says yes", orange "the cheap test is wrong here", purple what
-was tested.
+answer), purple what was tested. Three colours judge an answer, and only they do
+(:data:`VERDICTS`, keyed at the bottom of every scene): green the exact method's answer,
+teal an approximate method that is right here, orange an approximate method that is wrong
+here.
 """
 
 from __future__ import annotations
@@ -30,10 +32,17 @@ DIM: Color = (150, 152, 172)
 MOVER: Color = (222, 72, 72)      # the shape you drag
 STILL: Color = (72, 124, 222)     # the shape it meets
 BOUNDS: Color = (240, 210, 60)    # bounding boxes: the cheap answer
-EXACT: Color = (90, 205, 120)     # the exact test says yes
-WRONG: Color = (245, 150, 50)     # where the cheap answer is wrong
+EXACT: Color = (90, 205, 120)     # the exact method's answer
+APPROX_RIGHT: Color = (80, 200, 210)  # an approximate method, right here
+WRONG: Color = (245, 150, 50)     # an approximate method, wrong here
 TESTED: Color = (170, 110, 230)   # what was tested: cells, pairs, positions
 WHITE: Color = (255, 255, 255)
+
+VERDICTS: tuple[tuple[Color, str], ...] = (
+    (EXACT, "green: the exact method's answer"),
+    (APPROX_RIGHT, "teal: an approximate method, right here"),
+    (WRONG, "orange: an approximate method, wrong here"),
+)
 
 TEXT_PT = 20   # a size asked for; see :func:`font` for what draws it
 TITLE_PT = 28
@@ -60,6 +69,10 @@ def font(size_pt: int = TEXT_PT) -> pygame.font.Font:
 
 def line_height(size_pt: int = TEXT_PT) -> int:
     return font(size_pt).get_linesize() + LINE_GAP_PX
+
+
+def text_width(words: str, size_pt: int = TEXT_PT) -> int:
+    return font(size_pt).size(words)[0]
 
 
 def text(surface: pygame.Surface, words: str, at: tuple[int, int], color: Color = TEXT,

@@ -1,7 +1,10 @@
-"""The lab's scenes, in the order the list shows them: from one box to a whole platformer.
+"""The lab's scenes, in the order the list shows them, by group: the narrow phase (is this
+pair touching?), the broad phase (which pairs are worth asking?), motion, response, and the
+game's own coordinates and sprites.
 
-Where it sits: read by :mod:`game.lab.cli` for ``--list``, ``--scene`` and the window's list.
-Adding a scene is one module under ``game/lab/`` and one line here.
+Where it sits: read by :mod:`game.lab.cli` for ``--list``, ``--scene`` and the window's list,
+and by the testbed for PageUp and PageDown. Adding a scene is one module under ``game/lab/``
+and one line here, in its group.
 """
 
 from __future__ import annotations
@@ -25,7 +28,7 @@ from game.lab.tunnelling import Tunnelling
 from game.lab.xray import XRay
 
 SCENES: tuple[type[Scene], ...] = (
-    ScreenGrid,
+    # narrow phase
     Overlap,
     RotatedBox,
     Polygons,
@@ -33,12 +36,17 @@ SCENES: tuple[type[Scene], ...] = (
     CirclePrecheck,
     Masks,
     CompositeScene,
+    # broad phase
     PartyGrid,
     QuadtreeScene,
     SortAndSweepScene,
+    # motion
     Tunnelling,
+    Platformer,
+    # response
     Response,
     Contacts,
+    # game
+    ScreenGrid,
     XRay,
-    Platformer,
 )

@@ -30,6 +30,8 @@ class Circles(Scene):
     name = "circles"
     title = "squared distances, and the square box around a circle"
     keys_help = "drag the balls or the box"
+    group = "narrow phase"
+    draws = (Layer.SHAPES, Layer.BOUNDS, Layer.CONTACTS)
 
     def reset(self) -> None:
         self.pos = {"block": (BLOCK.x, BLOCK.y), "ball": (AREA.x + 290.0, AREA.y + 190.0),
@@ -56,9 +58,9 @@ class Circles(Scene):
         self.ball_box = ball.overlaps_box(block)
         self.square_box = square.overlaps(block)
         self.square_ball = square.overlaps(other.bounds())
-        self.meter.time("circle", lambda: ball.overlaps(other))
-        self.meter.time("circle-box", lambda: ball.overlaps_box(block))
-        self.meter.time("aabb", lambda: square.overlaps(block))
+        self.meter.time("Circle.overlaps", lambda: ball.overlaps(other))
+        self.meter.time("Circle.overlaps_box", lambda: ball.overlaps_box(block))
+        self.meter.time("square: Box.overlaps", lambda: square.overlaps(block))
         centres = math.dist(self.pos["ball"], self.pos["other"])
         self.lines = [
             f"ball-ball  Circle.overlaps:     {canvas.yes_no(self.ball_ball)}",
@@ -71,9 +73,8 @@ class Circles(Scene):
             f"  vs ball: {canvas.yes_no(self.square_ball)}"
             + ("  <- wrong" if self.square_ball and not self.ball_ball else ""),
             "",
-            "cost, one test each, timed here:",
-            f"  circle {self.meter.text('circle')}  circle-box {self.meter.text('circle-box')}",
-            f"  square (Box.overlaps) {self.meter.text('aabb')}",
+            "one circle-box test takes "
+            f"{self.meter.times('Circle.overlaps_box', 'square: Box.overlaps')} the square's",
         ]
 
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:

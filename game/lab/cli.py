@@ -1,7 +1,8 @@
 """``python -m game.lab [--list] [--scene NAME] [--screenshot PNG] [--frames N]``.
 
 Where it sits: the entry point of the lab. With no option it opens a window with the list
-of scenes; ``--scene NAME`` opens that scene; ``--list`` prints the scene names, one a line;
+of scenes; ``--scene NAME`` opens that scene; ``--list`` prints the scene names, one a line
+(on a terminal, or with ``--long``, each name is followed by its group and what it shows);
 ``--screenshot PNG`` draws ``--frames`` frames (default 1) without any window and saves the
 last one. Exit status: 0 done, 1 the picture could not be saved or no display for the
 window (one sentence naming ``--screenshot`` and ``--list``), 2 bad usage (an unknown scene
@@ -32,11 +33,23 @@ def scene_names() -> list[str]:
     return [scene.name for scene in SCENES]
 
 
+def listing() -> list[str]:
+    """``--list --long``: each scene's name, group and title, in columns, in the list's order."""
+    name_w = max(len(scene.name) for scene in SCENES)
+    group_w = max(len(scene.group) for scene in SCENES)
+    return [f"{scene.name:<{name_w}}  {scene.group:<{group_w}}  {scene.title}"
+            for scene in SCENES]
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = Parser(
         prog="python -m game.lab",
         description="Interactive scenes, one per collision technique.")
-    parser.add_argument("--list", action="store_true", help="print the scene names and exit")
+    parser.add_argument("--list", action="store_true",
+                        help="print the scene names, one a line, and exit (on a terminal, "
+                             "each with its group and description, as with --long)")
+    parser.add_argument("--long", action="store_true",
+                        help="with --list: each name with its group and description, always")
     parser.add_argument("--scene", metavar="NAME", help="open this scene")
     parser.add_argument("--screenshot", metavar="PNG", type=Path,
                         help="draw without a window and save the last frame here")
@@ -46,7 +59,8 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     names = scene_names()
     if args.list:
-        print("\n".join(names))
+        # Bare names when a script reads them (the public form), columns for a person.
+        print("\n".join(listing() if args.long or sys.stdout.isatty() else names))
         return 0
     if args.scene is not None and args.scene not in names:
         print(f"python -m game.lab: there is no scene called {excerpt(args.scene)}; the scenes "
@@ -105,13 +119,14 @@ def window(scene: str | None) -> int:
     import pygame
 
     from game.lab.scene import LAB_H_PX, LAB_W_PX
-    from game.lab.testbed import Lab
+    from game.lab.testbed import Lab, fit_window
 
     problem = open_window("python -m game.lab", LAB_WINDOW, (LAB_W_PX, LAB_H_PX), LAB_INSTEAD)
     if problem is not None:
         print(problem, file=sys.stderr)
         return EXIT_NO_WINDOW
     display = pygame.display.get_surface()
+    window = fit_window()  # held while the window is open (see game.app.window.fit_window)
     bed = Lab(SCENES, start=scene)
     clock = pygame.time.Clock()
     while bed.running:
@@ -120,4 +135,5 @@ def window(scene: str | None) -> int:
         pygame.display.flip()
         clock.tick(WINDOW_FPS)
     pygame.display.quit()
+    del window  # only now: SDL may hand it to events until the display is gone
     return 0

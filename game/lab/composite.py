@@ -26,6 +26,8 @@ class CompositeScene(Scene):
     name = "composite"
     title = "a concave shape as several boxes"
     keys_help = "drag the L or the coin"
+    group = "narrow phase"
+    draws = (Layer.SHAPES, Layer.BOUNDS, Layer.PAIRS)
 
     def reset(self) -> None:
         self.pos = {"crate": (AREA.x + 180.0, AREA.y + 120.0),
@@ -48,8 +50,8 @@ class CompositeScene(Scene):
         self.bounds_hit = bounds.overlaps(coin)
         self.parts_hit = crate.overlaps(coin)
         self.part_hits = [part.overlaps(coin) for part in crate.world_parts()]
-        self.meter.time("bounds", lambda: bounds.overlaps(coin))
-        self.meter.time("parts", lambda: crate.overlaps(coin))
+        self.meter.time("bounding box", lambda: bounds.overlaps(coin))
+        self.meter.time("Composite.overlaps", lambda: crate.overlaps(coin))
         wrong = self.bounds_hit and not self.parts_hit
         hit_parts = ", ".join(str(i + 1) for i, hit in enumerate(self.part_hits) if hit)
         self.lines = [
@@ -59,8 +61,8 @@ class CompositeScene(Scene):
             "",
             f"parts: {len(crate.parts)}; hit by the coin: {hit_parts or 'none'}",
             "",
-            "cost, one test each, timed here:",
-            f"  bounds {self.meter.text('bounds')}   parts {self.meter.text('parts')}",
+            "testing the parts takes "
+            f"{self.meter.times('Composite.overlaps', 'bounding box')} one box",
         ]
 
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:

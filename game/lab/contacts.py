@@ -29,6 +29,10 @@ class Contacts(Scene):
     name = "contacts"
     title = "starts and ends: a log that does not flood"
     keys_help = "drag the slider or a box"
+    group = "response"
+    draws = (Layer.SHAPES, Layer.CONTACTS)
+    timing_note = ("what this scene teaches is how many lines a log writes, counted "
+                   "exactly above; a time would only measure Python's sets")
 
     def reset(self) -> None:
         self.pos = {str(i): (box.x, box.y) for i, box in enumerate(BOXES)}
@@ -84,4 +88,4 @@ class Contacts(Scene):
                 canvas.box(surface, boxes[key], canvas.EXACT, 3)
         fresh = [e for e in self.tracker.log if e.tick == self.tracker.tick]
         for row, event in enumerate(fresh):
-            canvas.text(surface, str(event), (AREA.x + 16, AREA.y + 16 + row * 20), canvas.BOUNDS)
+            canvas.text(surface, str(event), (AREA.x + 16, AREA.y + 16 + row * 20), canvas.TEXT)

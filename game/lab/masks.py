@@ -41,6 +41,8 @@ class Masks(Scene):
     name = "masks"
     title = "pixel masks: the first overlapping pixel"
     keys_help = "drag the ball or the bar"
+    group = "narrow phase"
+    draws = (Layer.SHAPES, Layer.BOUNDS, Layer.CONTACTS)
 
     def reset(self) -> None:
         self.pos = {"bar": (AREA.x + 330.0, AREA.y + 250.0),
@@ -66,8 +68,8 @@ class Masks(Scene):
         self.pixel_hit = collide(ball, bar, self.stats)
         self.first = contact_point(ball, bar, self.stats)
         self.area = overlap_area(ball, bar, self.stats)
-        self.meter.time("rect", lambda: ball.rect.colliderect(bar.rect))
-        self.meter.time("mask", lambda: collide(ball, bar))
+        self.meter.time("rect guard", lambda: ball.rect.colliderect(bar.rect))
+        self.meter.time("masks.collide", lambda: collide(ball, bar))
         wrong = self.rects_hit and not self.pixel_hit
         self.lines = [
             f"rect guard (colliderect): {canvas.yes_no(self.rects_hit)}",
@@ -80,8 +82,7 @@ class Masks(Scene):
             f"{self.stats.mask_checks} mask tests",
             f"ball {self.ball_shape.mask.count()} px solid, bar {self.bar_shape.mask.count()}",
             "",
-            "cost, one test each, timed here:",
-            f"  rect {self.meter.text('rect')}   mask {self.meter.text('mask')}",
+            f"a mask test takes {self.meter.times('masks.collide', 'rect guard')} a rect guard",
         ]
 
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:

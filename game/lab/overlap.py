@@ -14,12 +14,46 @@ import pygame
 
 from game.collision.aabb import Box
 from game.lab import canvas
-from game.lab.scene import AREA, Layer, Scene
+from game.lab.cost import CostMeter
+from game.lab.scene import AREA, Control, Layer, Scene
 
 WALL = Box(AREA.x + 330, AREA.y + 110, 60, 260)  # where the wall starts
 PLAYER_W_PX, PLAYER_H_PX = 48.0, 72.0
 NUDGES = {pygame.K_LEFT: (-1.0, 0.0), pygame.K_RIGHT: (1.0, 0.0),
           pygame.K_UP: (0.0, -1.0), pygame.K_DOWN: (0.0, 1.0)}
+NUDGE_KEYS = tuple(NUDGES)
+
+
+def edge_gaps(player: Box, wall: Box) -> tuple[float, float]:
+    """How far apart the boxes are along x and along y: positive a gap, zero edges that
+    meet, negative an overlap that deep.
+
+    >>> edge_gaps(Box(0, 0, 10, 10), Box(10, 5, 10, 10))
+    (0, -5)
+    """
+    return (max(wall.left - player.right, player.left - wall.right),
+            max(wall.top - player.bottom, player.top - wall.bottom))
+
+
+def edge_words(player: Box, wall: Box) -> list[str]:
+    """What the edges say about the answer, worked out from the two boxes as they are."""
+    gap_x, gap_y = edge_gaps(player, wall)
+    if player.w <= 0 or player.h <= 0:
+        return ["a box with no width or height has no inside:",
+                "  it overlaps nothing (strict <)"]
+    if gap_x > 0 or gap_y > 0:
+        axis, gap = ("x", gap_x) if gap_x > 0 else ("y", gap_y)
+        return [f"a gap of {gap:g} px along {axis}:", "  apart"]
+    meeting = [axis for axis, gap in (("x", gap_x), ("y", gap_y)) if gap == 0]
+    if meeting:
+        edge = {"x": ("right edge = wall's left edge" if player.right == wall.left
+                      else "left edge = wall's right edge"),
+                "y": ("bottom edge = wall's top edge" if player.bottom == wall.top
+                      else "top edge = wall's bottom edge")}[meeting[0]]
+        return [f"{edge} ({'corner: ' if len(meeting) == 2 else ''}no shared inside):",
+                "  touching, not colliding (strict <)"]
+    return [f"the edges cross: {-gap_x:g} px deep along x, {-gap_y:g} along y:",
+            "  colliding (strict < holds both ways)"]
 
 
 def collision_status(player: Box, wall: Box) -> str:
@@ -35,11 +69,19 @@ class Overlap(Scene):
     name = "overlap"
     title = "test the overlap: colliding, touching or apart"
     keys_help = "drag player or wall; arrows nudge 1 px; Z zero-width player"
+    group = "narrow phase"
+    draws = (Layer.SHAPES, Layer.CONTACTS)
 
     def reset(self) -> None:
         self.pos = {"wall": (WALL.x, WALL.y),
                     "player": (WALL.left - PLAYER_W_PX, AREA.y + 200)}  # flush: touching
         self.zero_width = False
+        self.meter = CostMeter()
+
+    def controls(self) -> list[Control]:
+        return [Control("nudge the player 1 px", NUDGE_KEYS),
+                Control(f"zero-width player: {'on' if self.zero_width else 'off'}",
+                        (pygame.K_z,))]
 
     def player(self) -> Box:
         x, y = self.pos["player"]
@@ -63,6 +105,8 @@ class Overlap(Scene):
     def refresh(self) -> None:
         player, wall = self.player(), self.wall()
         self.answer = collision_status(player, wall)
+        self.meter.time("Box.overlaps", lambda: player.overlaps(wall))
+        self.meter.time("Box.touches", lambda: player.touches(wall))
         self.lines = [
             f"Collision status: {self.answer}",
             "",
@@ -73,15 +117,12 @@ class Overlap(Scene):
             f"penetration:  {player.penetration(wall):g} px",
             f"Rect.colliderect: {player.to_rect().colliderect(wall.to_rect())}",
             "",
-            "right edge = wall's left edge:",
-            "  touching, not colliding (strict <)",
+            *edge_words(player, wall),
         ]
-        if self.zero_width:
-            self.lines.append("zero width: overlaps nothing")
 
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:
         player, wall = self.player(), self.wall()
-        color = {"colliding": canvas.WRONG, "touching": canvas.EXACT, "apart": canvas.DIM}
+        color = {"colliding": canvas.EXACT, "touching": canvas.TEXT, "apart": canvas.DIM}
         if Layer.SHAPES in layers:
             canvas.box(surface, wall, canvas.STILL)
             canvas.box(surface, player, canvas.MOVER)

@@ -17,7 +17,8 @@ import pygame
 
 from game.collision.aabb import Box
 from game.lab import canvas
-from game.lab.scene import AREA, Layer, Point, Scene
+from game.lab.cost import CostMeter
+from game.lab.scene import AREA, Control, Layer, Point, Scene
 from game.sim.movement import Move, ground_under, move_x, move_y
 from game.sim.tilegrid import TileGrid, TileKind, TileShape
 
@@ -65,6 +66,8 @@ class Platformer(Scene):
     name = "platformer"
     title = "the platformer's move: x then y against tiles"
     keys_help = "Left/Right run, Up/Space jump, F fast; drag the body"
+    group = "motion"
+    draws = (Layer.SHAPES, Layer.PAIRS, Layer.CONTACTS, Layer.CELLS)
 
     def reset(self) -> None:
         self.grid = build_grid()
@@ -73,6 +76,12 @@ class Platformer(Scene):
         self.fast = False
         self.on_ground = False
         self.last: list[tuple[str, Move, list[tuple[int, int]], int, int]] = []
+        self.meter = CostMeter()
+
+    def controls(self) -> list[Control]:
+        return [Control(f"run speed: {'x20' if self.fast else 'normal'}", (pygame.K_f,)),
+                Control("jump" if self.on_ground else "jump (only from the ground)",
+                        (pygame.K_UP,))]
 
     def body(self) -> Box:
         x, y = self.pos["body"]
@@ -124,6 +133,12 @@ class Platformer(Scene):
             self.lines += [f"{axis} step: moved {moved:+.2f} px; hit {hit}",
                            f"  swept {move.swept.w:.1f} x {move.swept.h:.1f}; "
                            f"{visited} cells, {tested} shapes tested"]
+        if self.last:
+            (_, x_move, *_), (_, y_move, *_) = self.last
+            dx, dy = x_move.box.x - x_move.start.x, y_move.box.y - y_move.start.y
+            start = x_move.start
+            self.meter.time("the tick's x then y move", lambda: move_y(
+                self.grid, move_x(self.grid, start, dx).box, dy))
 
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:
         if Layer.CELLS in layers:

@@ -18,7 +18,8 @@ import pygame
 from game.collision.aabb import Box
 from game.collision.sat import Mtv, Point, Polygon, collide
 from game.lab import canvas
-from game.lab.scene import AREA, Layer, Scene
+from game.lab.cost import CostMeter
+from game.lab.scene import AREA, Control, Layer, Scene
 
 PENTAGON = ((0.0, -70.0), (66.0, -22.0), (41.0, 57.0), (-41.0, 57.0), (-66.0, -22.0))
 TRIANGLE = ((0.0, -60.0), (70.0, 50.0), (-70.0, 50.0))
@@ -50,12 +51,21 @@ class Polygons(Scene):
     name = "polygons"
     title = "convex polygons by SAT: axes, separating axis, push-out"
     keys_help = "drag shapes; Tab next axis; M push out"
+    group = "narrow phase"
+    draws = (Layer.SHAPES, Layer.BOUNDS, Layer.PAIRS, Layer.CONTACTS)
 
     def reset(self) -> None:
         self.pos = {"a": (AREA.x + 220.0, AREA.y + 230.0), "b": (AREA.x + 360.0, AREA.y + 250.0)}
         self.shown_axis = 0
         self.follow = True  # show the separating axis until Tab picks one by hand
         self.mtv: Mtv | None = None
+        self.meter = CostMeter()
+
+    def controls(self) -> list[Control]:
+        push = ("push A out by the MTV" if self.mtv is not None
+                else "push A out (apart: nothing to push)")
+        return [Control(f"axis drawn: #{self.shown_axis + 1}", (pygame.K_TAB,)),
+                Control(push, (pygame.K_m,))]
 
     def shape(self, key: str) -> Polygon:
         x, y = self.pos[key]
@@ -82,6 +92,8 @@ class Polygons(Scene):
                                 in enumerate(self.shadows) if b_hi - a_lo <= 0
                                 or a_hi - b_lo <= 0), None)
         self.mtv = collide(a, b)
+        self.meter.time("sat.collide", lambda: collide(a, b))
+        self.meter.time("bounding boxes", lambda: a.bounds().overlaps(b.bounds()))
         if self.follow and self.separating is not None:
             self.shown_axis = self.separating
         axis = self.axes[self.shown_axis]

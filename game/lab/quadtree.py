@@ -18,9 +18,9 @@ from game.collision.aabb import Box
 from game.collision.broad.brute_force import BruteForce
 from game.collision.broad.quadtree import Quadtree
 from game.lab import canvas
-from game.lab.cost import CostMeter, format_ns
+from game.lab.cost import CostMeter
 from game.lab.crowd import Crowd, CrowdScene
-from game.lab.scene import AREA, Layer, Point
+from game.lab.scene import AREA, Control, Layer, Point
 
 CAPACITY = 4
 MAX_DEPTH = 5
@@ -34,6 +34,8 @@ class QuadtreeScene(CrowdScene):
     name = "quadtree"
     title = "the quadtree: crowded squares split into four"
     keys_help = "click: add a body; A add 6; Backspace remove"
+    group = "broad phase"
+    draws = (Layer.SHAPES, Layer.CONTACTS, Layer.CELLS)
 
     def reset(self) -> None:
         corner = Box(TREE_AREA.x, TREE_AREA.y, TREE_AREA.w / 2, TREE_AREA.h / 2)
@@ -52,6 +54,10 @@ class QuadtreeScene(CrowdScene):
     def on_click(self, point: Point) -> None:
         if self.crowd.area.overlaps(Box(point[0], point[1], 1, 1)):
             self.add(point)
+
+    def controls(self) -> list[Control]:
+        return [Control(f"bodies: {len(self.crowd.boxes)} (A adds, Backspace removes)",
+                        (pygame.K_a, pygame.K_BACKSPACE))]
 
     def on_key(self, key: int) -> None:
         if key == pygame.K_a:
@@ -74,18 +80,18 @@ class QuadtreeScene(CrowdScene):
         same = brute.pairs() == self.pairs
         brute_tests = brute.stats.pair_tests
         n = len(items)
-        self.meter.time("tree", self.tree.pairs)
-        self.meter.time("brute", brute.pairs)
+        self.meter.time("quadtree, all pairs", self.tree.pairs)
+        self.meter.time("brute force, all pairs", brute.pairs)
         self.lines = [
             f"bodies: {n}; capacity {CAPACITY} a node",
             f"nodes: {self.tree.node_count()}; depth {self.tree.depth()}",
             f"quadtree: {tests} pair tests, {nodes_visited} nodes",
             f"brute force: {brute_tests} tests = n(n-1)/2 = {n * (n - 1) // 2}",
             f"pairs found: {len(self.pairs)}; same as brute force: {'yes' if same else 'NO'}",
-            "time per frame, timed here:",
-            f"  tree {format_ns(self.meter.ns['tree'])}  brute {format_ns(self.meter.ns['brute'])}",
+            "the tree's pairs take "
+            f"{self.meter.times('quadtree, all pairs', 'brute force, all pairs')} brute force's",
             "(the tree is rebuilt each frame; that",
-            " time is not in the figure above)",
+            " time is not in the timing below)",
         ]
 
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:

@@ -24,7 +24,8 @@ from game.collision.broad.brute_force import BroadPhase
 from game.collision.methods import build_broad_phase
 from game.collision.response import ZERO, PointMass, Vec, exchange, push_out, separate
 from game.lab import canvas
-from game.lab.scene import AREA, TICK_S, Layer, Point, Scene
+from game.lab.cost import CostMeter
+from game.lab.scene import AREA, TICK_S, Control, Layer, Point, Scene
 
 CRATES = 9
 SEED = 4
@@ -63,6 +64,8 @@ class Response(Scene):
     name = "response"
     title = "crates: push out, momentum, restitution, friction"
     keys_help = "E/D restitution, F/V friction; drag to throw"
+    group = "response"
+    draws = (Layer.SHAPES, Layer.CONTACTS)
 
     def reset(self) -> None:
         self.restitution = getattr(self, "restitution", 0.9)
@@ -84,6 +87,16 @@ class Response(Scene):
             self.phase.insert(key, crate.box)
         self.pushes: list[PushDrawn] = []
         self.crate_hits = self.wall_hits = 0
+        self.energy_before = self.energy_after = self.kinetic_energy()
+        self.meter = CostMeter()
+
+    def kinetic_energy(self) -> float:
+        return sum(0.5 * c.mass_kg * c.velocity_px_s.dot(c.velocity_px_s)
+                   for c in self.crates.values())
+
+    def controls(self) -> list[Control]:
+        return [Control(f"restitution {self.restitution:.1f}", (pygame.K_d, pygame.K_e)),
+                Control(f"friction {self.friction:.1f}", (pygame.K_v, pygame.K_f))]
 
     def on_key(self, key: int) -> None:
         if key == pygame.K_e:
@@ -109,6 +122,7 @@ class Response(Scene):
         crate.velocity_px_s = Vec(vx, vy)
 
     def step(self, dt_s: float) -> None:
+        self.energy_before = self.kinetic_energy()
         self.pushes = []
         # 1. Drift: overlaps may appear here.
         for key, crate in self.crates.items():
@@ -147,6 +161,7 @@ class Response(Scene):
                                     PointMass(math.inf, ZERO), push.normal.opposite(), 1.0)
                 crate.velocity_px_s = after.velocity_px_s
                 self.wall_hits += 1
+        self.energy_after = self.kinetic_energy()
 
     def refresh(self) -> None:
         momentum = ZERO
@@ -155,6 +170,14 @@ class Response(Scene):
             momentum = momentum.plus(crate.velocity_px_s.scaled(crate.mass_kg))
             energy += 0.5 * crate.mass_kg * crate.velocity_px_s.dot(crate.velocity_px_s)
         self.energy = energy
+        a, b = self.crates[0], self.crates[1]
+        normal = Vec(1.0, 0.0)
+        self.meter.time("one crate pair: separate + exchange", lambda: (
+            separate(a.box, b.box, a.mass_kg, b.mass_kg),
+            exchange(PointMass(a.mass_kg, a.velocity_px_s), PointMass(b.mass_kg,
+                     b.velocity_px_s), normal, self.restitution, self.friction)))
+        change = self.energy_after - self.energy_before
+        share = change / self.energy_before if self.energy_before else 0.0
         self.lines = [
             f"restitution {self.restitution:.1f}  (E up, D down)",
             f"friction    {self.friction:.1f}  (F up, V down)",
@@ -163,8 +186,9 @@ class Response(Scene):
             f"this tick: {self.crate_hits} crate pairs, {self.wall_hits} walls",
             f"momentum ({momentum.x:.1f}, {momentum.y:.1f}) kg px/s",
             f"kinetic energy {energy:.0f} kg px^2/s^2",
-            "walls reverse momentum; crate on crate",
-            "conserves it, and energy never grows",
+            f"energy in the last tick: {share:+.2%}"
+            + (" (grew!)" if change > 1e-9 * max(1.0, self.energy_before) else
+               " (kept)" if abs(share) < 1e-9 else " (lost to restitution and friction)"),
         ]
 
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:

@@ -19,7 +19,7 @@ from game.collision.aabb import Box
 from game.collision.sat import Polygon, collide, oriented_box
 from game.lab import canvas
 from game.lab.cost import CostMeter
-from game.lab.scene import AREA, Layer, Scene
+from game.lab.scene import AREA, Control, Layer, Scene
 
 HALF_W_PX, HALF_H_PX = 130.0, 26.0
 PROBE_PX = 28.0
@@ -31,6 +31,8 @@ class RotatedBox(Scene):
     name = "rotated-box"
     title = "the rotated box: its AABB grows; SAT stays exact"
     keys_help = "Left/Right turn the bar; drag bar or probe"
+    group = "narrow phase"
+    draws = (Layer.SHAPES, Layer.BOUNDS, Layer.PAIRS, Layer.CONTACTS)
 
     def reset(self) -> None:
         self.pos = {"bar": (AREA.x + 300, AREA.y + 250), "probe": (AREA.x + 330, AREA.y + 170)}
@@ -51,6 +53,10 @@ class RotatedBox(Scene):
     def grab_boxes(self) -> dict[str, Box]:
         cx, cy = self.pos["bar"]
         return {"bar": Box(cx - 20, cy - 20, 40, 40), "probe": self.probe()}
+
+    def controls(self) -> list[Control]:
+        return [Control(f"turn the bar: {self.angle_deg:.0f} degrees",
+                        (pygame.K_LEFT, pygame.K_RIGHT))]
 
     def on_key(self, key: int) -> None:
         if key == pygame.K_LEFT:
@@ -86,8 +92,8 @@ class RotatedBox(Scene):
         self.mtv = collide(probe_poly, bar)
         self.sat_hit = self.mtv is not None
         self._sample_false_hits(bar, bounds)
-        self.meter.time("aabb", lambda: probe.overlaps(bounds))
-        self.meter.time("sat", lambda: collide(probe_poly, bar))
+        self.meter.time("AABB test", lambda: probe.overlaps(bounds))
+        self.meter.time("SAT test", lambda: collide(probe_poly, bar))
         area = 4 * HALF_W_PX * HALF_H_PX
         verdict = ("AABB is wrong: a false hit in an empty corner"
                    if self.aabb_hit and not self.sat_hit else "both agree")
@@ -102,11 +108,11 @@ class RotatedBox(Scene):
             "tests made for the probe: 1 AABB, 1 SAT;",
             f"  the dots took {self.spots_sampled} SAT tests",
             "  when the bar last turned or moved",
-            "cost, one test each, timed here:",
-            f"  AABB {self.meter.text('aabb')}   SAT {self.meter.text('sat')}",
+            f"one SAT test takes {self.meter.times('SAT test', 'AABB test')} an AABB test here",
             "",
             f"false hits: {len(self.false_spots)} of {self.spots_sampled} probe",
-            "  spots touching the AABB (orange)",
+            "  spots touching the AABB"
+            + (" (orange dots)" if Layer.PAIRS in self.layers else " (layer 3 shows them)"),
         ]
 
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:

@@ -15,16 +15,23 @@ What it teaches (about testbeds more than collision):
     exactly as a finger does, with or without a window.
   * **Time advances only in** :meth:`Scene.step`, so pause and single step are the testbed's
     business and a paused scene still answers every drag.
+  * **Nothing hidden.** A scene names its group, the debug layers it draws (:attr:`Scene.draws`;
+    the legend lists only those, all on when the scene opens) and its parameters
+    (:meth:`Scene.controls`, each shown with its value and clickable); it times what it
+    teaches with :attr:`Scene.meter`, or says in :attr:`Scene.timing_note` why a time would
+    mean nothing there.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from enum import Enum
 from typing import ClassVar
 
 import pygame
 
 from game.collision.aabb import Box
+from game.lab.cost import CostMeter
 
 LAB_W_PX, LAB_H_PX = 960, 540  # the lab's own screen; the window scales it
 AREA = pygame.Rect(0, 32, 620, 480)  # where scenes draw their shapes; the panel is to its right
@@ -44,8 +51,29 @@ class Layer(Enum):
     CELLS = "cells or nodes"
 
 
+GROUPS = ("narrow phase", "broad phase", "motion", "response", "game")  # in the list's order
+
 LAYER_KEYS = {pygame.K_1: Layer.SHAPES, pygame.K_2: Layer.BOUNDS, pygame.K_3: Layer.PAIRS,
               pygame.K_4: Layer.CONTACTS, pygame.K_5: Layer.CELLS}
+
+
+@dataclass(frozen=True)
+class Control:
+    """A parameter or switch of a scene: what it is now, in words, and the keys that change
+    it (each drawn as a button that does what the key does)."""
+
+    text: str
+    keys: tuple[int, ...]
+
+
+def key_label(key: int) -> str:
+    """How a key is written on a button.
+
+    >>> key_label(pygame.K_UP), key_label(pygame.K_z), key_label(pygame.K_RIGHTBRACKET)
+    ('Up', 'Z', ']')
+    """
+    name = pygame.key.name(key)
+    return name.upper() if len(name) == 1 else name.capitalize()
 
 
 def inside(box: Box, point: Point) -> bool:
@@ -59,8 +87,13 @@ class Scene:
     name: ClassVar[str]  # letters, digits and hyphens: what ``--scene`` takes
     title: ClassVar[str]  # one line saying what the scene shows
     keys_help: ClassVar[str] = "drag the shapes"  # this scene's own keys, for the help line
+    group: ClassVar[str]  # one of :data:`GROUPS`
+    draws: ClassVar[tuple[Layer, ...]] = (Layer.SHAPES,)  # the layers its ``draw`` reads
+    timing_note: ClassVar[str] = ""  # why this scene times nothing (when its meter is empty)
 
     def __init__(self) -> None:
+        self.layers: set[Layer] = set(self.draws)  # the layers shown: all, to begin with
+        self.meter = CostMeter()  # what the scene times each frame (``reset`` may replace it)
         self.pos: dict[str, Point] = {}
         self.mouse: Point = (0.0, 0.0)
         self.held: set[int] = set()
@@ -84,6 +117,10 @@ class Scene:
 
     def on_key(self, key: int) -> None:
         """A key this scene uses was pressed (the testbed keeps its own keys)."""
+
+    def controls(self) -> list[Control]:
+        """The scene's parameters and switches, as they are now."""
+        return []
 
     def on_click(self, point: Point) -> None:
         """A press that grabbed nothing (a scene may add a body there)."""

@@ -17,7 +17,7 @@ import pygame
 from game.collision.aabb import Box
 from game.collision.broad.spatial_grid import SpatialGrid
 from game.lab import canvas
-from game.lab.scene import AREA, Layer, Scene
+from game.lab.scene import AREA, Control, Layer, Scene
 
 CELL_PX = 40
 ORIGIN = (AREA.x + 320, AREA.y + 240)  # where world (0, 0) is drawn
@@ -31,6 +31,10 @@ class ScreenGrid(Scene):
     name = "screen-grid"
     title = "the screen grid: y grows downwards, floor makes the pixel"
     keys_help = "drag the box; arrows nudge 0.25 px"
+    group = "game"
+    draws = (Layer.SHAPES, Layer.BOUNDS, Layer.CELLS)
+    timing_note = ("turning one position into a pixel and a cell is a floor and a "
+                   "division, done once a frame; the lesson is which pixel, not how fast")
 
     def reset(self) -> None:
         self.pos = {"box": (ORIGIN[0] - 52.75, ORIGIN[1] + 30.25)}  # world (-52.75, 30.25)
@@ -43,6 +47,9 @@ class ScreenGrid(Scene):
     def grab_boxes(self) -> dict[str, Box]:
         x, y = self.pos["box"]
         return {"box": Box(x, y, SIZE_PX, SIZE_PX)}
+
+    def controls(self) -> list[Control]:
+        return [Control(f"nudge the box {NUDGE_PX:g} px", tuple(NUDGES))]
 
     def on_key(self, key: int) -> None:
         if key in NUDGES:
@@ -62,7 +69,8 @@ class ScreenGrid(Scene):
             "(y grows downwards: below the origin is +y)",
             f"Box.to_rect(): Rect({self.rect.x}, {self.rect.y}, {self.rect.w}, {self.rect.h})",
             f"int() would give x = {truncated[0]}, y = {truncated[1]}",
-            "  -> int() is a pixel off here" if wrong else "  -> the same here (x, y >= 0)",
+            "  -> int() is a pixel off here" if wrong else
+            "  -> the same here (no negative fraction to truncate)",
             f"grid cell ({CELL_PX} px, floor): {self.cell}",
             f"screen pixel of its corner: ({math.floor(self.pos['box'][0])}, "
             f"{math.floor(self.pos['box'][1])})",

@@ -17,9 +17,9 @@ from game.collision.aabb import Box
 from game.collision.broad.brute_force import BruteForce
 from game.collision.broad.sort_and_sweep import SortAndSweep
 from game.lab import canvas
-from game.lab.cost import CostMeter, format_ns
+from game.lab.cost import CostMeter
 from game.lab.crowd import Crowd, CrowdScene
-from game.lab.scene import AREA, Layer
+from game.lab.scene import AREA, Control, Layer
 
 BODIES = 24
 SWEEP_AREA = Box(AREA.x + 8, AREA.y + 40, AREA.w - 16, AREA.h - 150)
@@ -31,6 +31,8 @@ class SortAndSweepScene(CrowdScene):
     name = "sort-and-sweep"
     title = "sort and sweep: only boxes overlapping on x are tested"
     keys_help = "move the mouse: sweep line; S stack into a column; drag bodies"
+    group = "broad phase"
+    draws = (Layer.SHAPES, Layer.BOUNDS, Layer.CONTACTS, Layer.CELLS)
 
     def reset(self) -> None:
         self.crowd = Crowd.random(5, BODIES, SWEEP_AREA, (14.0, 34.0), 30.0)
@@ -40,6 +42,10 @@ class SortAndSweepScene(CrowdScene):
         self.stacked = False
         self.meter = CostMeter(repeats=4)
         self.mouse = (AREA.x + 200.0, AREA.y + 100.0)
+
+    def controls(self) -> list[Control]:
+        return [Control(f"stacked in one column: {'yes' if self.stacked else 'no'}",
+                        (pygame.K_s,))]
 
     def on_key(self, key: int) -> None:
         if key == pygame.K_s:
@@ -61,8 +67,8 @@ class SortAndSweepScene(CrowdScene):
         brute_tests, n = brute.stats.pair_tests, len(self.crowd.boxes)
         self.active = self.sweep.query(Box(self.mouse[0], AREA.top, 1, AREA.h))
         self.order = sorted(self.crowd.boxes, key=lambda k: (self.crowd.boxes[k].left, k))
-        self.meter.time("sweep", self.sweep.pairs)
-        self.meter.time("brute", brute.pairs)
+        self.meter.time("sort and sweep, all pairs", self.sweep.pairs)
+        self.meter.time("brute force, all pairs", brute.pairs)
         self.lines = [
             f"bodies: {len(self.crowd.boxes)}" + ("  (stacked: worst case)" if self.stacked
                                                   else ""),
@@ -70,9 +76,9 @@ class SortAndSweepScene(CrowdScene):
             f"brute force: {brute_tests} tests = n(n-1)/2 = {n * (n - 1) // 2}",
             f"pairs found: {len(self.pairs)}; same as brute force: {'yes' if same else 'NO'}",
             f"active at x = {self.mouse[0]:.0f}: {len(self.active)} bodies",
-            "time per frame, timed here:",
-            f"  sweep {format_ns(self.meter.ns['sweep'])}"
-            f"  brute {format_ns(self.meter.ns['brute'])}",
+            "the sweep's pairs take "
+            f"{self.meter.times('sort and sweep, all pairs', 'brute force, all pairs')}"
+            " brute force's",
         ]
 
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:

@@ -33,7 +33,7 @@ from game.collision.swept import (
 )
 from game.lab import canvas
 from game.lab.cost import CostMeter
-from game.lab.scene import AREA, Layer, Scene
+from game.lab.scene import AREA, TICK_S, Control, Layer, Scene
 
 LANES = ("discrete", "sub-steps", "speed clamp", "swept")
 LANE_H_PX = 112
@@ -46,6 +46,7 @@ START_SPEED_PX_PER_TICK = 40.0
 CLAMP_PX_PER_TICK = 16.0
 START_SUBSTEPS = 2
 TICKS_PER_STEP_RUNNING = 15  # while running, four ticks a second: slow motion
+TICKS_A_SECOND_RUNNING = 1 / (TICKS_PER_STEP_RUNNING * TICK_S)
 
 
 def lane_top(lane: int) -> float:
@@ -77,10 +78,22 @@ def inside(flight: Flight, wall: Box) -> str:
     return f"hit on tick {flight.ticks}, {flight.box.penetration(wall):g} px inside"
 
 
+def verdict_color(lane: str, flight: Flight) -> canvas.Color:
+    """The lab's verdict colours: the sweep is exact; the other lanes approximate, right when
+    they stop the body (late or inside the wall), wrong when it tunnels."""
+    if not flight.done:
+        return canvas.DIM
+    if flight.outcome.startswith("TUNNELLED"):
+        return canvas.WRONG
+    return canvas.EXACT if lane == "swept" else canvas.APPROX_RIGHT
+
+
 class Tunnelling(Scene):
     name = "tunnelling"
     title = "discrete, sub-steps, speed clamp and swept, side by side"
     keys_help = "Up/Down speed; [ ] sub-steps; N one tick; drag a wall"
+    group = "motion"
+    draws = (Layer.SHAPES, Layer.BOUNDS, Layer.PAIRS)
 
     def reset(self) -> None:
         self.wall_x = WALL_X
@@ -108,6 +121,12 @@ class Tunnelling(Scene):
         """Every body back to the start, at the current speed."""
         self.flights = [Flight(Box(START_X, lane_top(lane) + LANE_H_PX / 2 - BODY_PX / 2,
                                    BODY_PX, BODY_PX)) for lane in range(len(LANES))]
+
+    def controls(self) -> list[Control]:
+        return [Control(f"speed {self.speed_px:g} px a tick",
+                        (pygame.K_DOWN, pygame.K_UP)),
+                Control(f"sub-steps {self.steps}",
+                        (pygame.K_LEFTBRACKET, pygame.K_RIGHTBRACKET))]
 
     def on_key(self, key: int) -> None:
         if key == pygame.K_UP:
@@ -172,18 +191,20 @@ class Tunnelling(Scene):
 
     def refresh(self) -> None:
         box, wall = self.flights[0].box, wall_of(0, self.wall_x)
-        self.meter.time("discrete", lambda: discrete_hit(box, self.speed_px, 0, wall))
-        self.meter.time("sub", lambda: substep_hit(box, self.speed_px, 0, wall, self.steps))
-        self.meter.time("swept", lambda: sweep(box, self.speed_px, 0, wall))
-        self.lines = [f"speed {self.speed_px:g} px a tick (body {BODY_PX:g}, wall {WALL_W_PX:g})",
+        self.meter.time("discrete_hit", lambda: discrete_hit(box, self.speed_px, 0, wall))
+        self.meter.time("substep_hit", lambda: substep_hit(box, self.speed_px, 0, wall,
+                                                           self.steps))
+        self.meter.time("sweep", lambda: sweep(box, self.speed_px, 0, wall))
+        self.lines = [f"SLOW MOTION: {TICKS_A_SECOND_RUNNING:g} ticks a second while running "
+                      f"(the game: {1 / TICK_S:g})",
+                      f"speed {self.speed_px:g} px a tick (body {BODY_PX:g}, wall {WALL_W_PX:g})",
                       f"sub-steps {self.steps}; clamp at {CLAMP_PX_PER_TICK:g} px a tick", ""]
         for lane, flight in enumerate(self.flights):
             self.lines.append(f"{LANES[lane]}: {flight.outcome}")
             self.lines.append(f"   {flight.tests} tests in {flight.ticks} ticks")
-        self.lines += ["", "one call, timed here:",
-                       f"  discrete {self.meter.text('discrete')}"
-                       f"   swept {self.meter.text('swept')}",
-                       f"  {self.steps} sub-steps {self.meter.text('sub')}"]
+        self.lines += ["", f"one call each (substep_hit with {self.steps} steps):",
+                       f"  a sweep takes {self.meter.times('sweep', 'discrete_hit')} a discrete "
+                       "test"]
 
     def draw(self, surface: pygame.Surface, layers: set[Layer]) -> None:
         for lane, flight in enumerate(self.flights):
@@ -200,6 +221,5 @@ class Tunnelling(Scene):
                     canvas.box(surface, tested, canvas.TESTED, 2)
             if Layer.SHAPES in layers:
                 canvas.box(surface, flight.box, canvas.MOVER)
-            color = canvas.WRONG if flight.outcome.startswith("TUNNELLED") else (
-                canvas.EXACT if flight.done else canvas.DIM)
+            color = verdict_color(LANES[lane], flight)
             canvas.text(surface, flight.outcome, (AREA.x + 130, round(top) + 4), color, 18)

@@ -16,7 +16,8 @@ from game.app.assets import ASSETS, COIN_PX, SPRITE_PX, strip
 from game.collision.aabb import Box
 from game.collision.circles import Circle
 from game.lab import canvas
-from game.lab.scene import AREA, Layer, Scene
+from game.lab.cost import CostMeter
+from game.lab.scene import AREA, Control, Layer, Scene
 
 SCALE = 4
 BALL_R_PX = 40
@@ -49,6 +50,8 @@ class XRay(Scene):
     name = "x-ray"
     title = "the rects behind the sprites, a round sprite in its square"
     keys_help = "X x-ray on/off; drag the sprites"
+    group = "game"
+    draws = (Layer.SHAPES, Layer.BOUNDS, Layer.CONTACTS)
 
     def reset(self) -> None:
         self.images = {"player": load_frame("player.png", SPRITE_PX),
@@ -60,6 +63,10 @@ class XRay(Scene):
                     "ball": (AREA.x + 300.0, AREA.y + 180.0),
                     "player": (AREA.x + 244.0, AREA.y + 128.0)}
         self.xray = True
+        self.meter = CostMeter()
+
+    def controls(self) -> list[Control]:
+        return [Control(f"x-ray: {'on' if self.xray else 'off'}", (pygame.K_x,))]
 
     def sprites(self) -> dict[str, Prop]:
         return {key: Prop(self.images[key], (round(x), round(y)))
@@ -86,6 +93,10 @@ class XRay(Scene):
         self.ball_rect_hit = "ball" in self.rect_hits
         self.ball_true_hit = self.ball_circle().overlaps_box(Box.from_rect(player.rect))
         wrong = self.ball_rect_hit and not self.ball_true_hit
+        ball, held = self.ball_circle(), Box.from_rect(player.rect)
+        ball_rect = sprites["ball"].rect
+        self.meter.time("square rect: colliderect", lambda: player.rect.colliderect(ball_rect))
+        self.meter.time("circle: Circle.overlaps_box", lambda: ball.overlaps_box(held))
         self.lines = [
             f"x-ray: {'on' if self.xray else 'off'} (X)",
             f"player rect {tuple(player.rect)}",

@@ -1,12 +1,14 @@
 """``python -m game.tools.lab_screenshots``: remake the README's picture of every lab scene.
 
 Where it sits: beside the game, like :mod:`game.tools.screenshots`. It asks the lab for its
-scene names (``python -m game.lab --list``) and then runs, for each, the very command a reader
-could type, ``python -m game.lab --scene NAME --frames N --screenshot PNG``, printing it as it
-goes. A scene that only shows something after time has passed (a flight reaching its wall,
-a contact log filling up) gets more frames; the others are drawn as they open. The pictures
-land in ``assets/screenshots/lab/``. The lab is run as a program, never imported, so the
-tools and the lab stay apart.
+scenes (``python -m game.lab --list``, a name first on each line) and then runs, for each,
+the very command a reader could type,
+``python -m game.lab --scene NAME --frames N --screenshot PNG``, printing it as it goes.
+Every scene runs long enough to fill its timing window (the medians, spreads and history
+graphs of :data:`DEFAULT_FRAMES` frames are whole); a scene that only shows something after
+more time has passed (a flight reaching its wall, a contact log filling up) gets more frames.
+The pictures land in ``assets/screenshots/lab/``. The lab is run as a program, never
+imported, so the tools and the lab stay apart.
 """
 
 from __future__ import annotations
@@ -17,8 +19,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 SHOTS = Path("assets") / "screenshots" / "lab"
-DEFAULT_FRAMES = 2
-FRAMES = {"tunnelling": 390, "response": 90, "contacts": 420}  # ticks for something to happen
+DEFAULT_FRAMES = 121  # the first frame, then a whole timing window (``game.lab.cost.WINDOW``)
+FRAMES = {"tunnelling": 390, "contacts": 420}  # ticks for something to happen
 
 
 def command(name: str) -> list[str]:
@@ -32,7 +34,7 @@ def main() -> None:
     listed = subprocess.run([sys.executable, "-m", "game.lab", "--list"], cwd=ROOT, check=True,
                             capture_output=True, text=True)
     (ROOT / SHOTS).mkdir(parents=True, exist_ok=True)
-    for name in listed.stdout.split():
+    for name in (line.split()[0] for line in listed.stdout.splitlines() if line.strip()):
         args = command(name)
         print(" ".join(["python", *args[1:]]))
         subprocess.run(args, cwd=ROOT, check=True)

@@ -5,10 +5,11 @@ shipped level, stopped at a chosen tick and saved with ``--screenshot`` (and ``-
 where the picture shows the overlay), exactly as a reader could run it by hand: the command
 for each is printed as it goes. The pictures land in ``assets/screenshots/``.
 
-One picture cannot come from a headless run, because a headless run has no level-end
-banner (the banner is a pause of the window): ``level-end.png`` plays the first level's
-winning script in this process and draws its last frame with the window's own drawing code,
-:func:`game.app.frame.render_frame` and :meth:`game.app.banner.Banner.draw`.
+Two pictures cannot come from a headless run, which has neither the level-end banner (a
+pause of the window) nor the F5 key: ``level-end.png`` and ``debug-full-panel.png`` play the
+first level's winning script in this process and draw the frame with the window's own drawing
+code, :func:`game.app.frame.render_frame` (with the overlay's full panel, as after one press
+of F5) and :meth:`game.app.banner.Banner.draw`.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+import time
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -23,11 +25,13 @@ import pygame
 
 from game.app.assets import load_assets
 from game.app.banner import BANNER_S, Banner
+from game.app.debug_overlay import PanelMode
 from game.app.frame import render_frame
 from game.levels import FIRST_LEVEL, load_level
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
 from game.sim.campaign import Campaign
 from game.sim.inputs import InputScript
+from game.sim.world import Measure
 
 ROOT = Path(__file__).resolve().parents[2]
 SHOTS = ROOT / "assets" / "screenshots"
@@ -81,6 +85,31 @@ def level_end_picture(path: Path) -> None:
     pygame.display.quit()
 
 
+FULL_PANEL_TICKS = 335  # just after the first stomp: the contact lines have something to say
+MS_PER_S = 1000.0
+
+
+def full_panel_picture(path: Path) -> None:
+    """The first level's winning script played to :data:`FULL_PANEL_TICKS`, drawn with the
+    overlay's full panel, as the window shows it after F5; the tick time is the last tick's,
+    measured here."""
+    os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+    pygame.display.init()
+    pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX))
+    script = InputScript.load(ROOT / "tests" / "scripts" / f"{FIRST_LEVEL.stem}.txt")
+    campaign = Campaign(FIRST_LEVEL, loader=lambda level: load_level(level, images=True),
+                        measure=Measure(queries=True))
+    tick_s = 0.0
+    while campaign.ticks < FULL_PANEL_TICKS:
+        started = time.perf_counter()
+        campaign.tick(script.held_at(campaign.ticks))
+        tick_s = time.perf_counter() - started
+    frame = render_frame(campaign, debug=True, update_ms=tick_s * MS_PER_S,
+                         panel=PanelMode.FULL)
+    pygame.image.save(frame, str(path))
+    pygame.display.quit()
+
+
 def main() -> None:
     SHOTS.mkdir(parents=True, exist_ok=True)
     for shot in SHOTS_TO_TAKE:
@@ -89,6 +118,9 @@ def main() -> None:
         subprocess.run(command, cwd=ROOT, check=True)
     print("level-end.png: the first level's winning script, drawn with the banner")
     level_end_picture(SHOTS / "level-end.png")
+    print(f"debug-full-panel.png: the same script to tick {FULL_PANEL_TICKS}, with the "
+          "overlay's full panel (F5)")
+    full_panel_picture(SHOTS / "debug-full-panel.png")
 
 
 if __name__ == "__main__":
