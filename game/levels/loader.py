@@ -46,7 +46,7 @@ from game.levels.header import MAX_TOTAL_CELLS, MapHeader, read_header
 from game.levels.images import check_image
 from game.levels.layers import LayerNode, walk_layers
 from game.levels.objects import read_objects
-from game.levels.paths import Sandbox, real, resolve, sandbox_for
+from game.levels.paths import Sandbox, check_map_file, real, resolve, sandbox_for
 from game.levels.properties import Value, read_properties
 from game.levels.solids import build_grid
 from game.levels.templates import Templates
@@ -210,10 +210,11 @@ def _read(path: Path, findings: Findings, images: bool, check_images: bool,
           tuning: Tuning, folder: Path | None) -> Level:
     """Every step of loading, in order of trust; raises LevelError at the end if any step
     recorded an error."""
-    # 1. The file, and the grid its header describes.
+    # 1. The file (if it lies in its own sandbox), and the grid its header describes.
+    sandbox = sandbox_for(path, folder)
+    check_map_file(path, sandbox, findings)
     root = read_tiled_xml(path, "map", findings)
     header = read_header(root, findings)
-    sandbox = sandbox_for(path, folder)
 
     # 2. Tilesets and tile layers: what collides where.
     tilesets = read_tilesets(root, path, sandbox, findings, check_images)
@@ -273,3 +274,14 @@ def check_level(path: Path | str, folder: Path | None = None) -> Findings:
     with contextlib.suppress(LevelError):  # its errors are in findings
         _read(path, findings, images=False, check_images=True, tuning=Tuning(), folder=folder)
     return findings
+
+
+def files_read(path: Path | str, folder: Path | None = None) -> tuple[Path, ...]:
+    """Every file reading the map at ``path`` opens, as the checker reads it (images
+    included), in the order they were opened; as far as it got when the map is bad. This is
+    what ``--watch`` watches: the loader's own list, through the loader's own rules."""
+    path = Path(path)
+    findings = Findings(path)
+    with contextlib.suppress(LevelError):
+        _read(path, findings, images=False, check_images=True, tuning=Tuning(), folder=folder)
+    return (path, *(file for file in findings.files if file != path))
