@@ -21,7 +21,7 @@ import pygame
 import pytest
 
 from game.app.watch import FileWatcher, level_files
-from game.levels import check_level, load_level
+from game.levels import LevelError, budget, check_level, load_level
 from game.levels.images import header_size
 from tests.test_loader import OBJECTS, TILESET, write_map
 
@@ -213,3 +213,126 @@ def test_a_png_named_gif_is_decoded_as_what_it_was_measured_as(tmp_path: Path) -
     level = write_map(tmp_path, tileset=TILESET.format(
         image='<image source="t.gif" width="64" height="16"/>'), objects=OBJECTS)
     assert check_level(level).errors == []
+
+
+# -- a budget for everything a level makes ----------------------------------------------------
+
+def big_map(folder: Path, cols: int, rows: int, gid: int = 1, *, tileset: str = "",
+            objects: str = OBJECTS, body_extra: str = "") -> Path:
+    """A ``cols`` x ``rows`` map whose bottom row is tile ``gid`` and the rest empty."""
+    data = ",".join(["0"] * (cols * (rows - 1)) + [str(gid)] * cols)
+    body = (f'<layer name="ground" width="{cols}" height="{rows}"><data encoding="csv">'
+            f"{data}</data></layer>{body_extra}")
+    attrs = (f'orientation="orthogonal" width="{cols}" height="{rows}" tilewidth="16" '
+             'tileheight="16" infinite="0"')
+    return write_map(folder, body, tileset=tileset or TILESET.format(image=""),
+                     objects=objects, map_attrs=attrs)
+
+
+def refusal(level: Path) -> str:
+    """The one sentence the game says for ``level``, checked to be one line."""
+    with pytest.raises(LevelError) as caught:
+        load_level(level)
+    return one_sentence(str(caught.value))
+
+
+def test_forty_collision_rectangles_on_one_tile_are_refused_before_any_is_placed(
+        tmp_path: Path) -> None:
+    rects = "".join(f'<object id="{i}" x="{i % 16}" y="{i // 16}" width="1" height="1"/>'
+                    for i in range(40))
+    tileset = ('<tileset firstgid="1" name="t" tilewidth="16" tileheight="16" tilecount="1" '
+               f'columns="1"><tile id="0" type="Solid"><objectgroup>{rects}</objectgroup>'
+               '</tile></tileset>')
+    level = big_map(tmp_path, 500, 498, tileset=tileset)
+    message = refusal(level)
+    assert f"more than {budget.MAX_SHAPES_PER_TILE} collision rectangles" in message
+
+
+def test_the_collision_shapes_of_a_whole_map_are_counted_before_they_are_made(
+        tmp_path: Path) -> None:
+    rects = "".join(f'<object id="{i}" x="{i}" y="0" width="1" height="1"/>'
+                    for i in range(budget.MAX_SHAPES_PER_TILE))
+    tileset = ('<tileset firstgid="1" name="t" tilewidth="16" tileheight="16" tilecount="1" '
+               f'columns="1"><tile id="0" type="Solid"><objectgroup>{rects}</objectgroup>'
+               '</tile></tileset>')
+    cells = budget.MAX_SHAPES // budget.MAX_SHAPES_PER_TILE + 1
+    level = big_map(tmp_path, cells, 3, tileset=tileset)
+    assert f"more than {budget.MAX_SHAPES:,} collision shapes" in refusal(level)
+
+
+def objects_of(kind: str, count: int, size: int, extra: str = "") -> str:
+    return ('<objectgroup id="9" name="objects">'
+            '<object id="1" type="Player" x="2" y="2"><point/></object>'
+            '<object id="2" type="Exit" x="48" y="16" width="16" height="16"/>'
+            + "".join(f'<object id="{i + 3}" type="{kind}" x="{i % 40}" y="0" '
+                      f'width="{size}" height="{size}">{extra}</object>'
+                      for i in range(count)) + "</objectgroup>")
+
+
+PLATFORM = ('<properties><property name="width" type="float" value="4096"/>'
+            '<property name="height" type="float" value="4096"/></properties>'
+            '<polyline points="0,0 32,0"/>')
+
+
+@pytest.mark.parametrize(("kind", "count", "size", "extra", "said"), [
+    ("Coin", 19_990, 512, "", "19,990 Coins"),
+    ("Enemy", 19_990, 16, "", "19,990 Enemies"),
+    ("Coin", 200, 4096, "", "pixels in all"),
+    ("Platform", 200, 16, PLATFORM, "pixels in all"),
+])
+def test_sprites_and_their_pixels_are_counted_before_any_surface_is_made(
+        tmp_path: Path, kind: str, count: int, size: int, extra: str, said: str) -> None:
+    level = big_map(tmp_path, 260, 260, objects=objects_of(kind, count, size, extra))
+    message = refusal(level)
+    assert said in message and "one level" in message
+    findings = check_level(level)
+    assert findings.errors and "all playable" not in str(findings.errors)
+
+
+def test_a_tileset_named_a_thousand_times_is_cut_within_the_budget(tmp_path: Path) -> None:
+    (tmp_path / "strip.tsx").write_text(
+        '<tileset name="strip" tilewidth="1" tileheight="1" tilecount="1" columns="1">'
+        '<image source="strip.png" width="16384" height="16"/></tileset>', encoding="utf-8")
+    mentions = "".join(f'<tileset firstgid="{1 + 2 * i}" source="strip.tsx"/>'
+                       for i in range(999))
+    level = write_map(tmp_path, tileset=TILESET.format(image="").replace(
+        'firstgid="1"', 'firstgid="3000"') + mentions)
+    message = refusal(level)
+    assert f"at most {budget.MAX_TILES_CUT:,}" in message
+
+
+def test_animated_cells_past_the_budget_are_refused(tmp_path: Path) -> None:
+    frames = "".join(f'<frame tileid="{i % 2}" duration="100"/>' for i in range(1_000))
+    tileset = TILESET.format(image='<image source="t.png" width="64" height="16"/>').replace(
+        '<tile id="0" type="Solid"/>', f'<tile id="0" type="Solid"><animation>{frames}'
+        '</animation></tile>')
+    cells = budget.MAX_ANIMATED_CELLS + 1
+    level = big_map(tmp_path, cells // 2 + 1, 3, tileset=tileset)
+    data = level.read_text(encoding="utf-8").replace(',0,', ',1,', cells)
+    level.write_text(data, encoding="utf-8")
+    assert "animated tiles" in refusal(level)
+
+
+def test_offsets_that_overflow_only_when_added_are_refused(tmp_path: Path) -> None:
+    body = ('<group name="far" offsetx="1.7e308"><layer name="ground" width="4" height="3" '
+            'offsetx="1.7e308"><data encoding="csv">0,0,0,0,\n0,0,0,0,\n1,1,1,1</data>'
+            '</layer></group>')
+    level = write_map(tmp_path, body)
+    assert "its offset, added to its groups'" in refusal(level)
+    done = run(["-m", "game.levels", "check", str(level), "--no-solve"], tmp_path)
+    assert done.returncode == 1 and "Traceback" not in done.stderr
+    assert "all playable" not in done.stdout
+
+
+def test_a_circle_of_levels_won_at_the_spawn_stops_with_a_sentence(tmp_path: Path) -> None:
+    exit_at_spawn = OBJECTS.replace('x="48" y="16"', 'x="0" y="0"')
+    for name, other in (("a.tmx", "b.tmx"), ("b.tmx", "a.tmx")):
+        write_map(tmp_path, objects=exit_at_spawn, name=name).write_text(
+            (tmp_path / name).read_text(encoding="utf-8").replace(
+                '<map version="1.8" ', '<map version="1.8" ').replace(
+                "</map>", '<properties><property name="next_level" type="file" '
+                f'value="{other}"/></properties></map>'), encoding="utf-8")
+    game = run(["-m", "game", "--headless", "--level", str(tmp_path / "a.tmx")], tmp_path)
+    assert game.returncode == 1
+    message = one_sentence(game.stderr)
+    assert f"{budget.MAX_LEVELS_PER_RUN:,} levels were completed" in message

@@ -41,6 +41,8 @@ from game.app.files import (
 from game.app.frame import render_frame
 from game.app.report import Timing, build_report
 from game.levels import FIRST_LEVEL, LevelError, load_level
+from game.levels.budget import MAX_LEVELS_PER_RUN
+from game.levels.errors import escaped
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import NOTHING, Action, Actions, InputScript, InputScriptError, Recorder
 from game.sim.level import Level
@@ -198,10 +200,19 @@ def run_headless(game_run: Run) -> int:
     Ctrl-C ends the run early, and its report, recording and screenshot are still written
     (exit status 130)."""
     limit = game_run.args.ticks if game_run.args.ticks is not None else HEADLESS_TICK_LIMIT
+    levels = MAX_LEVELS_PER_RUN if game_run.args.ticks is None else None
     status = EXIT_OK
     try:
         while not game_run.finished() and game_run.campaign.ticks < limit:
             game_run.tick()
+            if levels is not None and game_run.campaign.levels_completed >= levels:
+                level = game_run.campaign.world.level.path
+                print(f"{escaped(shown(level))}: {levels:,} levels were completed in one run "
+                      "without --ticks, so the levels' next_level properties must go round "
+                      "in a circle of levels won at once — give --ticks N to play it anyway, "
+                      "or check next_level and the Exits", file=sys.stderr)
+                status = EXIT_BAD_FILE
+                break
     except KeyboardInterrupt:
         status = EXIT_INTERRUPTED
     frame = None

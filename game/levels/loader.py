@@ -35,10 +35,11 @@ from __future__ import annotations
 
 import contextlib
 import xml.etree.ElementTree as ET
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from game.levels import pytmx_bridge
+from game.levels.budget import MAX_ANIMATED_CELLS
 from game.levels.classes import LEVEL, TILE_KINDS
 from game.levels.entities import build_entities
 from game.levels.errors import Findings, LevelError, excerpt
@@ -206,6 +207,18 @@ def _split_by_objects(layers: Sequence[LayerNode], drawn: Sequence[TileLayer]
     return behind, in_front
 
 
+def _check_animated_cells(layers: Sequence[TileLayer], animations: Mapping[int, object],
+                          findings: Findings) -> None:
+    """Fail if the drawn layers hold more animated cells than a frame can look at."""
+    if not animations:
+        return
+    count = sum(gid in animations for layer in layers for row in layer.gids for gid in row)
+    if count > MAX_ANIMATED_CELLS:
+        findings.fail("map", f"its drawn layers hold {count:,} animated tiles, more than the "
+                      f"{MAX_ANIMATED_CELLS:,} the game animates in one level",
+                      "paint most of them with a still tile, or split the level")
+
+
 def _read(path: Path, findings: Findings, images: bool, check_images: bool,
           tuning: Tuning, folder: Path | None) -> Level:
     """Every step of loading, in order of trust; raises LevelError at the end if any step
@@ -240,6 +253,7 @@ def _read(path: Path, findings: Findings, images: bool, check_images: bool,
     behind, in_front = _split_by_objects(layers, pytmx_bridge.drawn_layers(
         tmx, [layer for layer, _gids in decoded], colliding))
     animated = pytmx_bridge.animated_tiles(tmx, [*behind, *in_front])
+    _check_animated_cells([*behind, *in_front], animated.animations, findings)
     next_level = properties.get("next_level")
     return Level(
         path=path, grid=grid, spawn=entities.spawn, coins=entities.coins,
