@@ -28,13 +28,14 @@ from __future__ import annotations
 import argparse
 import math
 import os
+import signal
 import sys
 from collections.abc import Iterator
 from pathlib import Path
 
 import pygame
 
-from game.levels.errors import LevelError
+from game.levels.errors import LevelError, escaped
 from game.levels.loader import check_level, load_level
 from game.levels.reach import measure_reach
 from game.levels.route_picture import save_route
@@ -101,7 +102,7 @@ def check(paths: list[Path], solve_seconds: float | None = DEFAULT_SOLVE_SECONDS
         for path, refusal in _maps(argument):
             checked += 1
             if refusal is not None:
-                print(refusal)
+                print(escaped(refusal))
                 failures += 1
                 continue
             try:
@@ -122,7 +123,7 @@ def check(paths: list[Path], solve_seconds: float | None = DEFAULT_SOLVE_SECONDS
                          f"{error}) — open it in Tiled and save it again"]
                 failed = True
             for line in lines:
-                print(line)
+                print(escaped(line))
             failures += failed
     verdict = "all playable" if not failures else f"{failures} not playable"
     solved = ", each solved from spawn to Exit" if solve_seconds is not None and not failures \
@@ -207,6 +208,8 @@ def _seconds(text: str) -> float:
 def main(argv: list[str] | None = None) -> int:
     """Run a command; Ctrl-C stops it with exit status 130 and one line, not a traceback."""
     try:
+        if __name__ == "__main__":  # from here Ctrl-C is a KeyboardInterrupt, caught below
+            signal.signal(signal.SIGINT, signal.default_int_handler)
         return _main(argv)
     except KeyboardInterrupt:
         print("stopped by Ctrl-C", file=sys.stderr)
