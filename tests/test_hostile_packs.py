@@ -21,7 +21,7 @@ import pygame
 import pytest
 
 from game.app.watch import FileWatcher, level_files
-from game.levels import LevelError, budget, check_level, load_level
+from game.levels import LevelError, budget, check_level, errors, load_level
 from game.levels.images import header_size
 from tests.test_loader import OBJECTS, TILESET, write_map
 
@@ -336,3 +336,146 @@ def test_a_circle_of_levels_won_at_the_spawn_stops_with_a_sentence(tmp_path: Pat
     assert game.returncode == 1
     message = one_sentence(game.stderr)
     assert f"{budget.MAX_LEVELS_PER_RUN:,} levels were completed" in message
+
+
+# -- output that cannot lie -------------------------------------------------------------------
+
+FORGED = "coin\nchecked 1 map(s): all playable\r\x9b2J\u202etxt.exe"
+
+
+def test_a_name_cannot_forge_a_line_or_send_controls_to_the_terminal(tmp_path: Path) -> None:
+    objects = OBJECTS.replace('name="hero"', f'name="{escape_xml(FORGED)}"').replace(
+        '<object id="2" type="Exit"', f'<object id="3" name="{escape_xml(FORGED)}" '
+        'type="Chest" x="1" y="1"/><object id="2" type="Exit"')
+    level = write_map(tmp_path, layer_named(FORGED), objects=objects)
+    done = run(["-m", "game.levels", "check", str(level), "--no-solve"], tmp_path)
+    assert "Traceback" not in done.stderr
+    lines = done.stdout.splitlines()
+    assert sum(line.startswith("checked 1 map(s)") for line in lines) == 1
+    assert lines[-1].startswith("checked 1 map(s)")
+    for char in ("\r", "\x9b", "\u202e", "\x1b"):
+        assert char not in done.stdout
+    assert "\\nchecked 1 map(s)" in done.stdout and "\\u202e" in done.stdout
+
+
+def escape_xml(text: str) -> str:
+    return "".join(f"&#{ord(c)};" if c in "\n\r" else c for c in text)
+
+
+def layer_named(name: str) -> str:
+    return (f'<layer name="{escape_xml(name)}" width="4" height="3">'
+            '<properties><property name="gravity" value="1"/></properties>'
+            '<data encoding="csv">0,0,0,0,\n0,0,0,0,\n1,1,1,1</data></layer>')
+
+
+def test_warnings_of_one_kind_are_counted_and_shown_a_few_at_a_time(tmp_path: Path) -> None:
+    floating = "".join(f'<object id="{i}" type="Exit" x="{i % 40}" y="0" width="4" height="4"/>'
+                       for i in range(3, 1_003))
+    level = big_map(tmp_path, 40, 3, objects=OBJECTS.replace("</objectgroup>", floating
+                                                             + "</objectgroup>"))
+    lines = list(check_level(level).lines())
+    floats = [line for line in lines if "floats" in line]
+    assert len(floats) == errors.WARNINGS_SHOWN_PER_KIND
+    [more] = [line for line in lines if "… and" in line]
+    assert f"… and {1_000 - errors.WARNINGS_SHOWN_PER_KIND:,} more" in more
+    assert len(lines) < 20
+
+
+# -- the command line's edges -----------------------------------------------------------------
+
+def test_ctrl_c_while_the_modules_load_is_status_130_and_one_line(tmp_path: Path) -> None:
+    """Python sets argv[0] to "-m" while ``python -m`` imports the packages; a SIGINT that
+    lands in the imports after the package's first line is the guard's."""
+    code = ("import os, signal, sys; sys.argv[0] = '-m'; import game; "
+            "os.kill(os.getpid(), signal.SIGINT); import game.levels.loader; print('on')")
+    done = run(["-c", code], tmp_path)
+    assert done.returncode == 130 and done.stderr == "stopped by Ctrl-C\n"
+    assert "on" not in done.stdout
+
+
+@pytest.mark.parametrize("module", [["game.levels", "check", "levels", "--no-solve"],
+                                    ["game.lab", "--list"],
+                                    ["game", "--headless", "--ticks", "100000"]])
+def test_ctrl_c_at_any_moment_never_shows_a_traceback_through_the_game(
+        module: list[str]) -> None:
+    import signal
+    import time
+
+    for delay in (0.1, 0.3, 0.6, 1.0):
+        process = subprocess.Popen(
+            [sys.executable, "-m", *module], cwd=ROOT, env=ENV, text=True,
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+        time.sleep(delay)
+        process.send_signal(signal.SIGINT)
+        _out, err = process.communicate(timeout=120)
+        # Before the package's first line runs, the interpreter's own start-up is Python's.
+        assert f"{os.sep}game{os.sep}" not in err, err
+        if "Traceback" not in err and process.returncode not in (0, -signal.SIGINT):
+            assert process.returncode == 130 and "stopped by Ctrl-C" in err
+
+
+def outputs(folder: Path, name: str) -> list[str]:
+    return ["--report", str(folder / f"{name}.json"), "--record", str(folder / f"{name}.txt"),
+            "--screenshot", str(folder / name)]
+
+
+@pytest.mark.parametrize("name", ["odd\udcff\udcfename", "x" * 240])
+def test_output_names_of_any_bytes_and_any_length_are_written_under_that_name(
+        tmp_path: Path, name: str) -> None:
+    from game.app import cli
+
+    level = str(ROOT / "levels/01-first-steps.tmx")
+    assert cli.main(["--headless", "--ticks", "5", "--level", level,
+                     *outputs(tmp_path, name)]) == 0
+    written = sorted(os.fsencode(p.name) for p in tmp_path.iterdir())
+    expected = sorted(os.fsencode(n) for n in (f"{name}.json", f"{name}.txt", name))
+    assert written == expected
+    assert (tmp_path / name).read_bytes().startswith(b"\x89PNG")
+    lab = subprocess.run([sys.executable, "-m", "game.lab", "--scene", "overlap",
+                          "--screenshot", os.fsencode(tmp_path / f"{name}.png")], env=ENV,
+                         capture_output=True, timeout=120, check=False)
+    assert lab.returncode == 0, lab.stderr
+    assert (tmp_path / f"{name}.png").read_bytes().startswith(b"\x89PNG")
+
+
+def test_a_failed_picture_write_leaves_nothing_and_names_the_file(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    from game.app import cli
+
+    def full_disk(surface: object, stream: object, hint: str = "") -> None:
+        assert hasattr(stream, "write")
+        stream.write(b"\x89PNG\r\n\x1a\n" + bytes(8))  # type: ignore[attr-defined]
+        raise pygame.error("Error writing the PNG file.")
+
+    monkeypatch.setattr(pygame.image, "save", full_disk)
+    shot = tmp_path / "shot"
+    status = cli.main(["--headless", "--ticks", "5", "--level",
+                       str(ROOT / "levels/01-first-steps.tmx"), "--screenshot", str(shot)])
+    err = capsys.readouterr().err
+    assert status == 1 and one_sentence(err).startswith(f"{shot}: could not be written")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_an_input_script_saved_with_a_byte_order_mark_is_read(tmp_path: Path) -> None:
+    from game.sim.inputs import InputScript
+
+    script = tmp_path / "in.txt"
+    script.write_bytes(b"\xef\xbb\xbf0 +right\n")
+    assert [str(e) for e in InputScript.load(script).events] == ["0 +right"]
+
+
+def test_a_run_that_does_not_record_keeps_no_input_history() -> None:
+    import argparse
+
+    from game.app.run import Run
+    from game.sim.campaign import Campaign
+    from game.sim.inputs import Action
+
+    for record in (None, Path("r.txt")):
+        args = argparse.Namespace(record=record, ticks=None)
+        game = Run(Campaign(ROOT / "levels/01-first-steps.tmx", loader=load_level), None, args)
+        for tick in range(100):
+            game.tick(frozenset({Action.RIGHT}) if tick % 2 else frozenset())
+        assert len(game.recorder.events) == (0 if record is None else 99)  # ticks 1..99

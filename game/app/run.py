@@ -34,8 +34,8 @@ from game.app.files import (
     FileProblem,
     output_problem,
     read_small_text,
+    save_image,
     shown,
-    write_atomically,
     write_text_atomically,
 )
 from game.app.frame import render_frame
@@ -96,6 +96,9 @@ class Run:
     timing: Timing = field(default_factory=Timing)
     output_failed: bool = False  # a --record, --report or --screenshot could not be written
 
+    def __post_init__(self) -> None:
+        self.recorder.keep = getattr(self.args, "record", None) is not None  # else no history
+
     def tick(self, player: Actions = NOTHING) -> list[Event]:
         """One simulation tick with input from the script, else what the player holds."""
         held = self.script.held_at(self.campaign.ticks) if self.script else player
@@ -128,8 +131,7 @@ class Run:
             text_report = json.dumps(report, indent=2) + "\n"
             writes.append(lambda: write_text_atomically(self.args.report, text_report))
         if self.args.screenshot and frame is not None:
-            writes.append(lambda: write_atomically(
-                self.args.screenshot, lambda tmp: pygame.image.save(frame, str(tmp))))
+            writes.append(lambda: save_image(frame, self.args.screenshot))
         for write in writes:
             try:
                 write()

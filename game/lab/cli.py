@@ -18,7 +18,7 @@ import sys
 from pathlib import Path
 
 from game.app.arguments import Parser, excerpt, whole_number
-from game.app.files import output_problem
+from game.app.files import FileProblem, output_problem, save_image
 from game.lab.catalogue import SCENES
 
 MAX_FRAMES = 36_000  # ten minutes of the lab at 60 frames a second
@@ -87,9 +87,9 @@ def screenshot(scene: str | None, path: Path, frames: int) -> int:
         bed.frame()
         bed.draw(surface)
     try:
-        pygame.image.save(surface, str(path))
-    except (pygame.error, OSError) as error:
-        print(f"python -m game.lab: cannot save the screenshot {path}: {error}", file=sys.stderr)
+        save_image(surface, path)
+    except FileProblem as error:
+        print(f"python -m game.lab: --screenshot: {error}", file=sys.stderr)
         return 1
     return 0
 

@@ -37,8 +37,9 @@ import pygame
 
 from game.levels.errors import LevelError, escaped
 from game.levels.loader import check_level, load_level
+from game.levels.outputs import image_suffix, write_output, write_surface
 from game.levels.reach import measure_reach
-from game.levels.route_picture import save_route
+from game.levels.route_picture import draw_route
 from game.levels.solver import Effort, solve
 from game.sim.level import Level
 from game.sim.tuning import TICK_HZ, Tuning
@@ -142,12 +143,12 @@ def solve_command(path: Path, out: Path | None, picture: Path | None,
         return 1
     solution = solve(level, Effort(seconds=seconds))
     if picture is not None:
-        try:
-            save_route(picture, level, solution.route,
-                       None if solution.found else solution.furthest)
-        except (OSError, pygame.error) as error:
-            print(f"{picture}: the picture cannot be written ({error}) — check the path",
-                  file=sys.stderr)
+        suffix = image_suffix(picture)
+        drawn = draw_route(level, solution.route, None if solution.found else solution.furthest)
+        failed = write_output(picture, lambda tmp: write_surface(drawn, tmp, suffix),
+                              "the picture", suffix)
+        if failed is not None:
+            print(failed, file=sys.stderr)
             return 1
     if not solution.found:
         col, row = solution.furthest_tile()
@@ -159,11 +160,10 @@ def solve_command(path: Path, out: Path | None, picture: Path | None,
         return 1
     script = solution.script()
     if out is not None:
-        try:
-            out.write_text(script, encoding="utf-8")
-        except OSError as error:
-            print(f"{out}: the script cannot be written ({error.strerror}) — check the path",
-                  file=sys.stderr)
+        failed = write_output(out, lambda tmp: tmp.write_text(script, encoding="utf-8"),
+                              "the script")
+        if failed is not None:
+            print(failed, file=sys.stderr)
             return 1
     else:
         sys.stdout.write(script)
