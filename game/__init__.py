@@ -10,10 +10,9 @@ of them runs, and each command hands Ctrl-C back to Python (a KeyboardInterrupt 
 once its modules are loaded.
 """
 
+import _signal  # type: ignore[import-not-found]  # C module: ``signal`` builds enums first
 import os
-import signal
 import sys
-import threading
 
 EXIT_INTERRUPTED = 130  # 128 + SIGINT
 
@@ -26,8 +25,10 @@ def _stopped_while_loading(_signum: int, _frame: object) -> None:
 
 def guard_startup() -> None:
     """Make Ctrl-C end the program quietly (status 130) until the command takes it over."""
-    if threading.current_thread() is threading.main_thread():  # only it may set handlers
-        signal.signal(signal.SIGINT, _stopped_while_loading)
+    try:  # noqa: SIM105 (contextlib is one more import before the guard is up)
+        _signal.signal(_signal.SIGINT, _stopped_while_loading)
+    except ValueError:  # only the main thread may set a handler
+        pass
 
 
 # ``python -m`` sets argv[0] to "-m" while it imports the packages on the way to __main__.
