@@ -21,7 +21,7 @@ import pygame
 import pytest
 
 from game.app.watch import FileWatcher, level_files
-from game.levels import LevelError, budget, check_level, errors, load_level
+from game.levels import LevelError, budget, check_level, errors, layers, load_level
 from game.levels.images import header_size
 from tests.test_loader import OBJECTS, TILESET, write_map
 
@@ -479,3 +479,14 @@ def test_a_run_that_does_not_record_keeps_no_input_history() -> None:
         for tick in range(100):
             game.tick(frozenset({Action.RIGHT}) if tick % 2 else frozenset())
         assert len(game.recorder.events) == (0 if record is None else 99)  # ticks 1..99
+
+
+def test_the_designers_guide_gives_every_limit_of_the_budget() -> None:
+    guide = (ROOT / "levels/README.md").read_text(encoding="utf-8")
+    table = guide[guide.index("### Limits"):guide.index("### Which files")]
+    for name in ("MAX_SHAPES_PER_TILE", "MAX_SHAPES", "MAX_COINS", "MAX_ENEMIES",
+                 "MAX_PLATFORMS", "MAX_SPRITE_PIXELS", "MAX_TILES_CUT", "MAX_ANIMATED_CELLS",
+                 "MAX_LEVELS_PER_RUN"):
+        assert f"| {getattr(budget, name):,} |" in table, name
+    assert f"| {layers.MAX_OFFSET_PX:,} px |" in table
+    assert "five at a time" in table and errors.WARNINGS_SHOWN_PER_KIND == 5
