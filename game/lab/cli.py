@@ -18,7 +18,7 @@ import sys
 from pathlib import Path
 
 from game.app.arguments import Parser, excerpt, whole_number
-from game.app.files import FileProblem, output_problem, save_image
+from game.app.files import FileProblem, output_problem, save_image, shown
 from game.lab.catalogue import SCENES
 
 MAX_FRAMES = 36_000  # ten minutes of the lab at 60 frames a second
@@ -86,10 +86,14 @@ def screenshot(scene: str | None, path: Path, frames: int) -> int:
     for _ in range(frames):
         bed.frame()
         bed.draw(surface)
+    if not path.parent.is_dir():
+        print(f"python -m game.lab: cannot save the screenshot {shown(path)}: its folder does "
+              "not exist", file=sys.stderr)
+        return 1
     try:
         save_image(surface, path)
     except FileProblem as error:
-        print(f"python -m game.lab: --screenshot: {error}", file=sys.stderr)
+        print(f"python -m game.lab: cannot save the screenshot: {error}", file=sys.stderr)
         return 1
     return 0
 
