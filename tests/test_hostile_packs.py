@@ -446,7 +446,7 @@ def test_a_failed_picture_write_leaves_nothing_and_names_the_file(
 
     def full_disk(surface: object, stream: object, hint: str = "") -> None:
         assert hasattr(stream, "write")
-        stream.write(b"\x89PNG\r\n\x1a\n" + bytes(8))  # type: ignore[attr-defined]
+        stream.write(b"\x89PNG\r\n\x1a\n" + bytes(8))
         raise pygame.error("Error writing the PNG file.")
 
     monkeypatch.setattr(pygame.image, "save", full_disk)
@@ -490,3 +490,15 @@ def test_the_designers_guide_gives_every_limit_of_the_budget() -> None:
         assert f"| {getattr(budget, name):,} |" in table, name
     assert f"| {layers.MAX_OFFSET_PX:,} px |" in table
     assert "five at a time" in table and errors.WARNINGS_SHOWN_PER_KIND == 5
+
+
+def test_a_solver_script_that_cannot_be_written_names_the_file_and_leaves_nothing(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from game.levels.__main__ import main as levels_main
+
+    out = tmp_path / "missing" / ("é" * 120 + "\udcff.txt")
+    status = levels_main(["solve", str(ROOT / "levels/01-first-steps.tmx"), "--out", str(out)])
+    err = capsys.readouterr().err
+    assert status == 1 and "the script cannot be written" in err and "Traceback" not in err
+    assert "\\udcff" in err or "\\xff" in err
+    assert not (tmp_path / "missing").exists()

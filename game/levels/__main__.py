@@ -129,7 +129,7 @@ def check(paths: list[Path], solve_seconds: float | None = DEFAULT_SOLVE_SECONDS
     verdict = "all playable" if not failures else f"{failures} not playable"
     solved = ", each solved from spawn to Exit" if solve_seconds is not None and not failures \
         else ""
-    print(f"checked {checked} map(s): {verdict}{solved}; {_reach_summary(own)}")
+    print(escaped(f"checked {checked} map(s): {verdict}{solved}; {_reach_summary(own)}"))
     return 1 if failures else 0
 
 
