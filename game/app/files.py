@@ -11,7 +11,9 @@ What it teaches:
     opened without blocking and read with a time limit, so a pipe nobody writes to is a
     sentence after ten seconds instead of a hang.
   * **Write atomically.** :func:`write_atomically` writes a temporary file in the same
-    folder and renames it over the target: on every platform Python supports,
+    folder, under a short plain name (:func:`game.levels.outputs.temporary_path`, so a real
+    name of 244 characters or of bytes that are not UTF-8 still works), and renames it over
+    the target: on every platform Python supports,
     :func:`os.replace` is atomic, so readers see the old file or the new one, never half.
     A temporary file left by a run that was killed mid-write is removed the next time the
     same file is read or written (:func:`remove_orphans`).

@@ -95,7 +95,7 @@ def _gif(head: bytes) -> Size | None:
             steps += 1
         at += 1
     if steps >= MAX_GIF_STEPS:
-        return "GIF", MAX_IMAGE_PX + 1, MAX_IMAGE_PX + 1  # too many blocks to measure
+        return None  # too many blocks to measure: its size cannot be known before decoding
     return "GIF", width, height
 
 

@@ -4,11 +4,11 @@ Where it sits: the loader reads tile layers, object layers and image layers in t
 this yields. (pytmx 3.32 regroups layers by kind, so a tile layer drawn over the objects in
 Tiled would come out under them; and it does not look into groups for this order.)
 
-What it teaches: a Tiled map is a tree. Numbers are checked where they are combined: each
-offset may be finite and the sum of a layer's and its groups' still overflow, so the sum is
-what is checked. Groups nest; a group's offset moves everything in
+What it teaches: a Tiled map is a tree. Groups nest; a group's offset moves everything in
 it, its opacity multiplies and a hidden group hides its children. Walking the tree once,
 depth first, gives each leaf layer in document order with those settings already combined.
+Numbers are checked where they are combined: a layer's offset and its groups' may each be
+finite and their sum overflow to infinity, so the sum is what is checked.
 
 >>> from pathlib import Path
 >>> root = ET.fromstring('<map><layer name="sky"/><group name="g" offsetx="2.5" opacity="0.5">'
