@@ -164,6 +164,13 @@ def test_watch_never_follows_what_the_loader_does_not_read(tmp_path: Path) -> No
     assert watched == [level]
     assert not any(str(path).startswith(str(secret.parent)) for path in watched)
     assert not FileWatcher(level).poll(10.0)
+    if STRACE:  # the watcher, started and polled, opens nothing the loader would not
+        code = ("import sys; from pathlib import Path; from game.app.watch import FileWatcher;"
+                " w = FileWatcher(Path(sys.argv[1])); w.poll(1e9); w.poll(2e9)")
+        done = run(["-c", code, str(level)], tmp_path, tmp_path / "trace")
+        assert done.returncode == 0, done.stderr
+        assert opened_outside(tmp_path / "trace", pack, secret.parent) == []
+        assert "trap.tsx" not in (tmp_path / "trace").read_text(errors="replace")
 
 
 def test_watch_lists_the_tileset_and_images_the_loader_opened(tmp_path: Path) -> None:
