@@ -156,6 +156,7 @@ class Findings:
         self.unshown: dict[str, int] = {}  # warnings past the first few of their kind, by fix
         self.files: list[Path] = []  # every file opened for this map, in order
         self._kinds: dict[str, int] = {}
+        self._opened: set[Path] = set()
 
     def warn(self, where: str, problem: str, fix: str) -> None:
         """Note something the game plays around (the checker prints it; exit status 0).
@@ -169,7 +170,8 @@ class Findings:
 
     def opened(self, path: Path) -> None:
         """Note a file opened for this map (what ``--watch`` watches)."""
-        if path not in self.files:
+        if path not in self._opened:
+            self._opened.add(path)
             self.files.append(path)
 
     def error(self, where: str, problem: str, fix: str) -> None:
