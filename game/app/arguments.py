@@ -29,9 +29,11 @@ argparse.ArgumentTypeError: '999...' (5,000 characters) is not a whole number fr
 from __future__ import annotations
 
 import argparse
+import contextlib
+import signal
 import sys
 from collections.abc import Callable
-from typing import NoReturn
+from typing import Any, NoReturn
 
 EXIT_USAGE = 2
 EXIT_INTERRUPTED = 130  # 128 + SIGINT
@@ -78,9 +80,27 @@ class Parser(argparse.ArgumentParser):
 
 
 def run_command(main: Callable[[], int]) -> int:
-    """Call ``main`` and return its exit status; Ctrl-C returns 130 with one line."""
+    """Call ``main`` and return its exit status; Ctrl-C returns 130 with one line.
+
+    While ``main`` runs, Ctrl-C is a KeyboardInterrupt it may catch (to write what a run has
+    done so far); before and after, the handler the program installed (the ``__main__``
+    modules' guard for the imports) is in charge."""
+    previous = _interrupts_raise()
     try:
         return main()
     except KeyboardInterrupt:
         print("stopped by Ctrl-C", file=sys.stderr)
         return EXIT_INTERRUPTED
+    finally:
+        if previous is not None:
+            with contextlib.suppress(ValueError, TypeError):
+                signal.signal(signal.SIGINT, previous)
+
+
+def _interrupts_raise() -> Any:
+    """Make Ctrl-C raise KeyboardInterrupt; the handler it replaced (None off the main
+    thread, where handlers cannot be set)."""
+    try:
+        return signal.signal(signal.SIGINT, signal.default_int_handler)
+    except ValueError:
+        return None

@@ -11,7 +11,9 @@ What it teaches:
     opened without blocking and read with a time limit, so a pipe nobody writes to is a
     sentence after ten seconds instead of a hang.
   * **Write atomically.** :func:`write_atomically` writes a temporary file in the same
-    folder and renames it over the target: on every platform Python supports,
+    folder, under a short plain name (:func:`game.levels.outputs.temporary_path`, so a real
+    name of 244 characters or of bytes that are not UTF-8 still works), and renames it over
+    the target: on every platform Python supports,
     :func:`os.replace` is atomic, so readers see the old file or the new one, never half.
     A temporary file left by a run that was killed mid-write is removed the next time the
     same file is read or written (:func:`remove_orphans`).
@@ -29,11 +31,18 @@ import contextlib
 import errno
 import os
 import re
-import secrets
 import stat
 import time
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
+
+from game.levels.outputs import (
+    image_suffix,
+    temporary_path,
+    temporary_pattern,
+    write_surface,
+)
 
 MAX_PATH_SHOWN_CHARS = 200  # a path longer than this is shown by its start and end
 MAX_PIPE_WAIT_S = 10.0  # a pipe read for a file may stay silent this long, no longer
@@ -235,31 +244,45 @@ def _writable_folder_problem(name: str, folder: Path) -> str | None:
     return None
 
 
-def write_atomically(path: Path, write: Callable[[Path], None]) -> None:
+DISK_FULL = (errno.ENOSPC, errno.EFBIG, errno.EDQUOT)
+
+
+def write_atomically(path: Path, write: Callable[[Path], None],
+                     suffix: str | None = None) -> None:
     """Call ``write`` on a temporary path beside ``path``, then rename it into place.
 
-    A path that cannot be written (a folder, a device, a full disk) is a FileProblem, and
-    no temporary file is left behind."""
+    A path that cannot be written (a folder, a device, a full disk) is a FileProblem naming
+    ``path`` itself, and no temporary file is left behind. ``suffix`` is the temporary
+    file's ending, when the writer picks its format by name."""
     problem = output_problem(path)
     if problem is not None:
         raise FileProblem(problem, _cause(problem))
     remove_orphans(path)  # what a killed writer of this same file left behind
-    tmp = path.with_name(f".{path.stem}.{os.getpid()}.{secrets.token_hex(4)}{path.suffix}")
+    tmp = temporary_path(path, suffix)  # short and plain, whatever the real name
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         write(tmp)
         os.replace(tmp, path)
-    except OSError as error:
+    except (OSError, ValueError) as error:
         with contextlib.suppress(OSError):
             tmp.unlink(missing_ok=True)
-        fix = ("free some space" if error.errno in (errno.ENOSPC, errno.EFBIG, errno.EDQUOT)
-               else "give another path")
-        raise FileProblem(f"{shown(path)}: could not be written ({_reason(error)}) — "
-                          f"{fix}", _reason(error)) from None
+        code = error.errno if isinstance(error, OSError) else None
+        reason = _reason(error) if isinstance(error, OSError) else str(error)
+        fix = "free some space" if code in DISK_FULL else "give another path"
+        raise FileProblem(f"{shown(path)}: could not be written ({reason}) — {fix}",
+                          reason) from None
     except BaseException:
         with contextlib.suppress(OSError):
             tmp.unlink(missing_ok=True)
         raise
+
+
+def save_image(surface: Any, path: Path) -> None:
+    """Write ``surface`` (a pygame Surface) to ``path`` atomically: as PNG, or as BMP, TGA
+    or JPEG when the name ends so; a write that fails (a full disk) is a FileProblem naming
+    ``path``, and leaves no file behind."""
+    suffix = image_suffix(path)
+    write_atomically(path, lambda tmp: write_surface(surface, tmp, suffix), suffix)
 
 
 def write_text_atomically(path: Path, text: str) -> None:
@@ -279,8 +302,7 @@ def write_text_atomically(path: Path, text: str) -> None:
 
 def _temporary_name(path: Path) -> re.Pattern[str]:
     """The names :func:`write_atomically` gives the temporary files of ``path``."""
-    return re.compile(rf"\.{re.escape(path.stem)}\.(\d{{1,10}})\.[0-9a-f]{{8}}"
-                      rf"{re.escape(path.suffix)}")
+    return temporary_pattern(path)
 
 
 def _running(pid: int) -> bool:

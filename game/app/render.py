@@ -277,8 +277,11 @@ class LayerCache:
     def _draw_animated(self, target: pygame.Surface, view_x: int, view_y: int,
                        ms: int) -> None:
         view_w, view_h = target.get_size()
+        shown: dict[int, int] = {}  # each animation's frame worked out once a frame
         for col, row, gid in self.animated:
-            image = self.images.get(animation_frame(self.animations[gid], ms))
+            if gid not in shown:
+                shown[gid] = animation_frame(self.animations[gid], ms)
+            image = self.images.get(shown[gid])
             if image is None:
                 continue
             x = col * self.tile_w - view_x

@@ -36,13 +36,15 @@ from game.app.files import (
     FileProblem,
     output_problem,
     read_small_text,
+    save_image,
     shown,
-    write_atomically,
     write_text_atomically,
 )
 from game.app.frame import render_frame
 from game.app.report import Timing, build_report
 from game.levels import FIRST_LEVEL, LevelError, load_level
+from game.levels.budget import MAX_LEVELS_PER_RUN
+from game.levels.errors import escaped
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import NOTHING, Action, Actions, InputScript, InputScriptError, Recorder
 from game.sim.level import Level
@@ -96,6 +98,9 @@ class Run:
     timing: Timing = field(default_factory=Timing)
     output_failed: bool = False  # a --record, --report or --screenshot could not be written
 
+    def __post_init__(self) -> None:
+        self.recorder.keep = getattr(self.args, "record", None) is not None  # else no history
+
     def tick(self, player: Actions = NOTHING) -> list[Event]:
         """One simulation tick with input from the script, else what the player holds."""
         held = self.script.held_at(self.campaign.ticks) if self.script else player
@@ -128,8 +133,7 @@ class Run:
             text_report = json.dumps(report, indent=2) + "\n"
             writes.append(lambda: write_text_atomically(self.args.report, text_report))
         if self.args.screenshot and frame is not None:
-            writes.append(lambda: write_atomically(
-                self.args.screenshot, lambda tmp: pygame.image.save(frame, str(tmp))))
+            writes.append(lambda: save_image(frame, self.args.screenshot))
         for write in writes:
             try:
                 write()
@@ -209,10 +213,19 @@ def run_headless(game_run: Run) -> int:
     Ctrl-C ends the run early, and its report, recording and screenshot are still written
     (exit status 130)."""
     limit = game_run.args.ticks if game_run.args.ticks is not None else HEADLESS_TICK_LIMIT
+    levels = MAX_LEVELS_PER_RUN if game_run.args.ticks is None else None
     status = EXIT_OK
     try:
         while not game_run.finished() and game_run.campaign.ticks < limit:
             game_run.tick()
+            if levels is not None and game_run.campaign.levels_completed >= levels:
+                level = game_run.campaign.world.level.path
+                print(f"{escaped(shown(level))}: {levels:,} levels were completed in one run "
+                      "without --ticks, so the levels' next_level properties must go round "
+                      "in a circle of levels won at once — give --ticks N to play it anyway, "
+                      "or check next_level and the Exits", file=sys.stderr)
+                status = EXIT_BAD_FILE
+                break
     except KeyboardInterrupt:
         status = EXIT_INTERRUPTED
     frame = None

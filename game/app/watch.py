@@ -1,9 +1,15 @@
 """``--watch``: notice when a level's files change on disk, so a save in Tiled shows at once.
 
-Where it sits: polled by the window loop a few times a second; when the map or one of its
-tilesets (or templates) has a new modification time, the window reloads the level through
-:meth:`game.sim.campaign.Campaign.reload`. A save that does not load keeps the old level running
-and puts the loader's message on screen until the next good save.
+Where it sits: polled by the window loop a few times a second; when the map or one of the
+files it uses (tilesets, templates, images) has a new modification time, the window reloads
+the level through :meth:`game.sim.campaign.Campaign.reload`. A save that does not load keeps
+the old level running and puts the loader's message on screen until the next good save.
+
+Which files: exactly those the loader opened the last time it read the map
+(:func:`game.levels.loader.files_read`), through its sandbox and its checks; the watcher
+never parses a file or follows a path itself, so it cannot be led to a file outside the
+level's folder, and it only ever calls ``stat`` (which never waits, even on a pipe). The
+list is read again after every change seen, so a tileset added in Tiled is watched next.
 
 Polling the modification time is enough here: it needs no extra dependency, costs a few
 ``stat`` calls per second, and Tiled writes its files in one go.
@@ -11,42 +17,23 @@ Polling the modification time is enough here: it needs no extra dependency, cost
 
 from __future__ import annotations
 
-import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
+
+from game.levels.loader import files_read
 
 POLL_INTERVAL_S = 0.25  # how often the files are looked at: well inside the 1 s promise
 
 
-def _sources(xml_file: Path) -> list[Path]:
-    """The files one Tiled file names (tilesets, templates, images), relative to itself."""
-    try:
-        root = ET.parse(xml_file).getroot()
-    except (OSError, ET.ParseError):
-        return []
-    found = []
-    for node in root.iter():
-        source = node.get("template") or (node.get("source") if node.tag in ("tileset", "image")
-                                          else None)
-        if source:
-            found.append((xml_file.parent / source).resolve())
-    return found
-
-
 def level_files(level_path: Path) -> list[Path]:
-    """The map, the tilesets and templates it names, and their images, as far as readable."""
-    files = [level_path]
-    for source in _sources(level_path):
-        files.append(source)
-        if source.suffix in (".tsx", ".tx"):
-            files.extend(_sources(source))
-    return list(dict.fromkeys(files))
+    """The map, then every file the loader opened while reading it, as far as it got."""
+    return list(files_read(level_path))
 
 
 def _stamp(path: Path) -> float | None:
     try:
         return path.stat().st_mtime_ns / 1e9
-    except OSError:
+    except (OSError, ValueError):
         return None
 
 
@@ -55,14 +42,16 @@ class FileWatcher:
     """Remembers the modification times of a level's files; :meth:`poll` says if any moved."""
 
     level_path: Path
+    _files: list[Path] = field(default_factory=list)
     _stamps: dict[Path, float | None] = field(default_factory=dict)
     _next_poll_s: float = 0.0
 
     def __post_init__(self) -> None:
+        self._files = level_files(self.level_path)
         self._stamps = self._read()
 
     def _read(self) -> dict[Path, float | None]:
-        return {path: _stamp(path) for path in level_files(self.level_path)}
+        return {path: _stamp(path) for path in self._files}
 
     def poll(self, now_s: float) -> bool:
         """True once for each change seen; looks at the disk at most every POLL_INTERVAL_S."""
@@ -71,5 +60,8 @@ class FileWatcher:
         self._next_poll_s = now_s + POLL_INTERVAL_S
         stamps = self._read()
         changed = stamps != self._stamps
+        if changed:  # the map may name other files now: ask the loader again
+            self._files = level_files(self.level_path)
+            stamps = self._read()
         self._stamps = stamps
         return changed

@@ -21,7 +21,7 @@ from pathlib import Path
 
 from game.app.arguments import Parser, excerpt, whole_number
 from game.app.display import EXIT_NO_WINDOW, LAB_INSTEAD, LAB_WINDOW, open_window
-from game.app.files import output_problem
+from game.app.files import FileProblem, output_problem, save_image, shown
 from game.lab.catalogue import SCENES
 
 MAX_FRAMES = 36_000  # ten minutes of the lab at 60 frames a second
@@ -105,10 +105,14 @@ def screenshot(scene: str | None, path: Path, frames: int) -> int:
     for _ in range(frames):
         bed.frame()
         bed.draw(surface)
+    if not path.parent.is_dir():
+        print(f"python -m game.lab: cannot save the screenshot {shown(path)}: its folder does "
+              "not exist", file=sys.stderr)
+        return 1
     try:
-        pygame.image.save(surface, str(path))
-    except (pygame.error, OSError) as error:
-        print(f"python -m game.lab: cannot save the screenshot {path}: {error}", file=sys.stderr)
+        save_image(surface, path)
+    except FileProblem as error:
+        print(f"python -m game.lab: cannot save the screenshot: {error}", file=sys.stderr)
         return 1
     return 0
 

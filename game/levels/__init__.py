@@ -10,9 +10,24 @@ route), and
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Any
+
 from game.levels.errors import Findings, LevelError, LevelWarning
-from game.levels.loader import check_level, load_level
 from game.levels.shipped import ASSETS_DIR, FIRST_LEVEL, LEVELS_DIR
+
+if TYPE_CHECKING:
+    from game.levels.loader import check_level, load_level
+
+
+def __getattr__(name: str) -> Any:
+    """The loader, imported when first asked for: ``python -m game.levels`` imports this
+    package before its ``__main__`` can guard against Ctrl-C, so the package itself loads
+    nothing heavy (the loader brings pygame and pytmx)."""
+    if name in ("check_level", "load_level"):
+        from game.levels import loader
+
+        return getattr(loader, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = ["ASSETS_DIR", "FIRST_LEVEL", "LEVELS_DIR", "Findings", "LevelError", "LevelWarning",
            "check_level", "load_level"]

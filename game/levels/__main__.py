@@ -28,16 +28,18 @@ from __future__ import annotations
 import argparse
 import math
 import os
+import signal
 import sys
 from collections.abc import Iterator
 from pathlib import Path
 
 import pygame
 
-from game.levels.errors import LevelError
+from game.levels.errors import LevelError, escaped
 from game.levels.loader import check_level, load_level
+from game.levels.outputs import image_suffix, write_output, write_surface
 from game.levels.reach import measure_reach
-from game.levels.route_picture import save_route
+from game.levels.route_picture import draw_route
 from game.levels.solver import Effort, solve
 from game.sim.level import Level
 from game.sim.tuning import TICK_HZ, Tuning
@@ -101,7 +103,7 @@ def check(paths: list[Path], solve_seconds: float | None = DEFAULT_SOLVE_SECONDS
         for path, refusal in _maps(argument):
             checked += 1
             if refusal is not None:
-                print(refusal)
+                print(escaped(refusal))
                 failures += 1
                 continue
             try:
@@ -122,12 +124,12 @@ def check(paths: list[Path], solve_seconds: float | None = DEFAULT_SOLVE_SECONDS
                          f"{error}) — open it in Tiled and save it again"]
                 failed = True
             for line in lines:
-                print(line)
+                print(escaped(line))
             failures += failed
     verdict = "all playable" if not failures else f"{failures} not playable"
     solved = ", each solved from spawn to Exit" if solve_seconds is not None and not failures \
         else ""
-    print(f"checked {checked} map(s): {verdict}{solved}; {_reach_summary(own)}")
+    print(escaped(f"checked {checked} map(s): {verdict}{solved}; {_reach_summary(own)}"))
     return 1 if failures else 0
 
 
@@ -141,12 +143,12 @@ def solve_command(path: Path, out: Path | None, picture: Path | None,
         return 1
     solution = solve(level, Effort(seconds=seconds))
     if picture is not None:
-        try:
-            save_route(picture, level, solution.route,
-                       None if solution.found else solution.furthest)
-        except (OSError, pygame.error) as error:
-            print(f"{picture}: the picture cannot be written ({error}) — check the path",
-                  file=sys.stderr)
+        suffix = image_suffix(picture)
+        drawn = draw_route(level, solution.route, None if solution.found else solution.furthest)
+        failed = write_output(picture, lambda tmp: write_surface(drawn, tmp, suffix),
+                              "the picture", suffix)
+        if failed is not None:
+            print(failed, file=sys.stderr)
             return 1
     if not solution.found:
         col, row = solution.furthest_tile()
@@ -158,11 +160,10 @@ def solve_command(path: Path, out: Path | None, picture: Path | None,
         return 1
     script = solution.script()
     if out is not None:
-        try:
-            out.write_text(script, encoding="utf-8")
-        except OSError as error:
-            print(f"{out}: the script cannot be written ({error.strerror}) — check the path",
-                  file=sys.stderr)
+        failed = write_output(out, lambda tmp: tmp.write_text(script, encoding="utf-8"),
+                              "the script")
+        if failed is not None:
+            print(failed, file=sys.stderr)
             return 1
     else:
         sys.stdout.write(script)
@@ -207,6 +208,8 @@ def _seconds(text: str) -> float:
 def main(argv: list[str] | None = None) -> int:
     """Run a command; Ctrl-C stops it with exit status 130 and one line, not a traceback."""
     try:
+        if __name__ == "__main__":  # from here Ctrl-C is a KeyboardInterrupt, caught below
+            signal.signal(signal.SIGINT, signal.default_int_handler)
         return _main(argv)
     except KeyboardInterrupt:
         print("stopped by Ctrl-C", file=sys.stderr)

@@ -11,10 +11,17 @@ problem recorded, so a designer sees all the broken objects of a map in one run.
 
 from __future__ import annotations
 
+import math
 from collections import defaultdict
 from dataclasses import dataclass
 
 from game.collision.aabb import Box
+from game.levels.budget import (
+    MAX_COINS,
+    MAX_ENEMIES,
+    MAX_PLATFORMS,
+    MAX_SPRITE_PIXELS,
+)
 from game.levels.classes import (
     CLASSES_BY_NAME,
     OBJECT_CLASSES,
@@ -163,6 +170,27 @@ def _warn_unknown(objects: list[MapObject], findings: Findings) -> None:
                       f"use one of {CLASS_NAMES}, or clear the class for notes")
 
 
+def _check_budget(coins: list[CoinSpec], enemies: list[EnemySpec],
+                  platforms: list[PlatformSpec], others: list[Box],
+                  findings: Findings) -> None:
+    """Fail if the map makes more bodies, or bodies of more pixels, than one level may
+    (:mod:`game.levels.budget`): each is a sprite with a surface, moved or drawn each tick."""
+    for count, limit, name in ((len(coins), MAX_COINS, "Coins"),
+                               (len(enemies), MAX_ENEMIES, "Enemies"),
+                               (len(platforms), MAX_PLATFORMS, "Platforms")):
+        if count > limit:
+            findings.fail("map", f"it has {count:,} {name}, more than the {limit:,} one "
+                          "level may have (each is moved or drawn every tick)",
+                          f"delete some {name}, or split the level into two maps")
+    boxes = [*(c.box for c in coins), *(e.box for e in enemies), *others]
+    pixels = sum(math.ceil(b.w) * math.ceil(b.h) for b in boxes) + sum(
+        math.ceil(p.width_px) * math.ceil(p.height_px) for p in platforms)
+    if pixels > MAX_SPRITE_PIXELS:
+        findings.fail("map", f"its objects' boxes cover {pixels:,} pixels in all, more than "
+                      f"the {MAX_SPRITE_PIXELS:,} the game draws sprites for in one level",
+                      "make the Coins, Enemies, Platforms and Exits smaller, or use fewer")
+
+
 def build_entities(objects: list[MapObject], header: MapHeader, grid: TileGrid,
                    tuning: Tuning, findings: Findings) -> Entities:
     """Turn objects into the level's spawn, coins, enemies and exits, or record why not.
@@ -221,6 +249,7 @@ def build_entities(objects: list[MapObject], header: MapHeader, grid: TileGrid,
                 findings.warn(o.place, f"the {cls.name} floats: no Solid or OneWay tile is "
                               "right under it", f"move the {cls.name} down until its bottom "
                               "edge rests on the ground")
+    _check_budget(coins, enemies, platforms, [*exits, *checkpoints], findings)
     if not spawns and objects and not any(o.cls for o in objects):
         findings.fail("", f"none of the map's {len(objects)} objects has a Class, so this "
                       "map has no Player object; Tiled 1.8 drops the classes of a map saved "

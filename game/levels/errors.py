@@ -6,6 +6,11 @@ problem found anywhere, in the map, a tileset or a template, comes out in the sa
 What it teaches:
   * **Errors are for people.** A message is one sentence in the contract's form,
     ``PATH: place: message — how to fix``, and the fix is said in Tiled's own words.
+  * **Output that cannot lie.** Everything a message quotes from a file (a name, a path, a
+    value) goes through :func:`escaped`: a newline, a carriage return, a C0 or C1 control or
+    a bidi override is shown as an escape, so a layer named ``"x\\nchecked 1 map(s): all
+    playable"`` cannot print a line of its own, and a long value is cut to an excerpt.
+    Warnings of one kind are counted, and only the first few of each kind are kept.
   * **Fatal or not.** Some problems stop the reading at once (a map that is not XML);
     others are recorded and the reading carries on, so the checker can list every broken
     object in one run instead of one per run. Warnings never stop anything.
@@ -27,6 +32,7 @@ game.levels.errors.LevelError: a.tmx: object #3 'Hero': 2 Player objects — del
 
 from __future__ import annotations
 
+import unicodedata
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -35,33 +41,68 @@ from typing import NoReturn
 MAX_ERRORS_PER_MAP = 20  # past this many, the rest of the map is not worth reading
 MAX_QUOTED_CHARS = 40  # a value from the file is quoted at most this long
 MAX_PART_CHARS = 300  # the path, the place or the problem of a message, at most
+WARNINGS_SHOWN_PER_KIND = 5  # of one kind of warning, this many are kept; the rest counted
+
+
+def _escape(char: str) -> str:
+    if char in "\n\r\t":
+        return {"\n": "\\n", "\r": "\\r", "\t": "\\t"}[char]
+    code = ord(char)
+    if code <= 0xFF:
+        return f"\\x{code:02x}"
+    return f"\\u{code:04x}" if code <= 0xFFFF else f"\\U{code:08x}"
+
+
+def _unsafe(char: str) -> bool:
+    """Would ``char`` move the cursor, end a line, or turn the text round on a terminal?
+    Controls (C0, C1), format characters (bidi overrides and isolates, zero-width joiners),
+    line and paragraph separators, surrogates and unassigned code points all would."""
+    return unicodedata.category(char) in ("Cc", "Cf", "Zl", "Zp", "Cs", "Co", "Cn")
+
+
+def escaped(text: str) -> str:
+    """``text`` with every character that could forge or hide output shown as an escape.
+
+    >>> print(escaped("coin\\nchecked 1 map(s): all playable"))
+    coin\\nchecked 1 map(s): all playable
+    >>> escaped("\\x1b[2J\\x9b\\u202etxt.exe\\r")
+    '\\\\x1b[2J\\\\x9b\\\\u202etxt.exe\\\\r'
+    >>> escaped("Café ✓")
+    'Café ✓'
+    """
+    if text.isprintable():
+        return text
+    return "".join(_escape(char) if _unsafe(char) else char for char in text)
 
 
 def excerpt(value: object) -> str:
-    """A value from a file as a message quotes it: ``repr`` if short, else its start and
-    its length, so a 30 MB attribute is never echoed whole.
+    """A value from a file as a message quotes it: escaped and quoted if short, else its
+    start and its length, so a 30 MB attribute is never echoed whole.
 
     >>> excerpt("12.5"), excerpt("9" * 5000)
     ("'12.5'", "'99999999999999999999...' (5,000 characters)")
+    >>> excerpt("a\\nb")
+    "'a\\\\nb'"
     """
     text = value if isinstance(value, str) else str(value)
     if len(text) <= MAX_QUOTED_CHARS:
-        return repr(value)
-    return f"{text[:MAX_QUOTED_CHARS // 2]!r}"[:-1] + f"...' ({len(text):,} characters)"
+        return f"'{escaped(text)}'"
+    return f"'{escaped(text[:MAX_QUOTED_CHARS // 2])}...' ({len(text):,} characters)"
 
 
 def _clip(text: str) -> str:
-    """``text`` cut to MAX_PART_CHARS, saying so: the last guard against a flood."""
-    if len(text) <= MAX_PART_CHARS:
-        return text
-    return f"{text[:MAX_PART_CHARS]}... ({len(text):,} characters)"
+    """``text`` escaped and cut to MAX_PART_CHARS, saying so: the last guard against a
+    forged line or a flood, whatever the message was built from."""
+    if len(text) > MAX_PART_CHARS:
+        text = f"{text[:MAX_PART_CHARS]}... ({len(text):,} characters)"
+    return escaped(text)
 
 
 def _sentence(path: Path | str, where: str, problem: str, fix: str, warning: bool) -> str:
     where, problem = _clip(where), _clip(problem)
     place = f"{where}: " if where else ""
     label = "warning: " if warning else ""
-    return f"{_clip(str(path))}: {place}{label}{problem} — {fix}"
+    return f"{_clip(str(path))}: {place}{label}{problem} — {_clip(fix)}"
 
 
 class LevelError(Exception):
@@ -112,10 +153,26 @@ class Findings:
         self.path = path
         self.warnings: list[LevelWarning] = []
         self.errors: list[LevelError] = []
+        self.unshown: dict[str, int] = {}  # warnings past the first few of their kind, by fix
+        self.files: list[Path] = []  # every file opened for this map, in order
+        self._kinds: dict[str, int] = {}
+        self._opened: set[Path] = set()
 
     def warn(self, where: str, problem: str, fix: str) -> None:
-        """Note something the game plays around (the checker prints it; exit status 0)."""
+        """Note something the game plays around (the checker prints it; exit status 0).
+        Warnings of one kind (the same fix) are kept WARNINGS_SHOWN_PER_KIND at a time and
+        the rest only counted, so a map that repeats one slip 400,000 times stays short."""
+        seen = self._kinds[fix] = self._kinds.get(fix, 0) + 1
+        if seen > WARNINGS_SHOWN_PER_KIND:
+            self.unshown[fix] = seen - WARNINGS_SHOWN_PER_KIND
+            return
         self.warnings.append(LevelWarning(self.path, where, problem, fix))
+
+    def opened(self, path: Path) -> None:
+        """Note a file opened for this map (what ``--watch`` watches)."""
+        if path not in self._opened:
+            self._opened.add(path)
+            self.files.append(path)
 
     def error(self, where: str, problem: str, fix: str) -> None:
         """Note a problem that makes the map unplayable, and carry on reading."""
@@ -140,5 +197,8 @@ class Findings:
         """Every finding as the checker prints it: warnings first, then errors."""
         for warning in self.warnings:
             yield str(warning)
+        for fix, count in self.unshown.items():
+            yield str(LevelWarning(self.path, "", f"… and {count:,} more like the warnings "
+                                   "above", fix))
         for error in self.errors:
             yield str(error)

@@ -5,6 +5,10 @@ image-layer image through :func:`check_image`; headless runs skip it and never o
 image file.
 
 What it teaches:
+  * **The decoder's answer is the one checked.** The file is read once (through
+    :mod:`game.levels.reading`), measured, and those same bytes are decoded, typed as the
+    format that was measured; a GIF is walked frame by frame the way SDL_image walks it
+    (stray bytes skipped), so a frame larger than its screen is seen before it is decoded.
   * **Read the size from the header, before decoding.** Every image format the game
     accepts (PNG, GIF, BMP, JPEG) states its width and height in its first bytes
     (:func:`header_size`). A 40-byte GIF can claim 65535x65535 pixels, which would take
@@ -27,7 +31,7 @@ True
 
 from __future__ import annotations
 
-import stat
+import io
 import struct
 from dataclasses import dataclass
 from pathlib import Path
@@ -35,12 +39,13 @@ from weakref import WeakKeyDictionary
 
 import pygame
 
-from game.levels.errors import Findings
+from game.levels.errors import Findings, escaped, excerpt
+from game.levels.reading import read_level_file
 
 MAX_IMAGE_BYTES = 64 * 1024 * 1024
 MAX_IMAGE_PX = 16384  # per side
 MAX_LEVEL_PIXELS = 4096 * 4096  # all images of one level: 64 MB decoded, as 32-bit pixels
-HEADER_BYTES = 64 * 1024  # a JPEG's size can come after its metadata; GIFs after a palette
+MAX_GIF_STEPS = 1_000_000  # blocks and sub-blocks walked in one GIF: 255 MB of real data
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 FORMATS = "PNG, GIF, BMP or JPEG"
 FIX_IMAGE = "save the image as PNG next to the tileset and pick it again in Tiled"
@@ -57,25 +62,40 @@ def _png(head: bytes) -> Size | None:
 
 
 def _gif(head: bytes) -> Size | None:
-    """The larger of the logical screen and the first frame: decoders size the picture by
-    the frame, which may be larger than the screen it claims to sit in."""
+    """The logical screen, grown to hold every frame: walked the way SDL_image walks it.
+
+    SDL_image skips a stray byte between blocks and sizes the picture by the frame, which
+    may be far larger than the screen it claims to sit in; so every image descriptor in the
+    file is found the same way and measured, not only one after a well-formed start.
+    """
     if len(head) < 13:
         return None
     width, height = struct.unpack("<HH", head[6:10])
-    at = 13
+    at, steps = 13, 0
     if head[10] & 0x80:  # a global colour table follows the screen descriptor
         at += 3 * (2 << (head[10] & 0x07))
-    while at < len(head):
+    while at < len(head) and steps < MAX_GIF_STEPS:
         block = head[at]
-        if block == 0x2C and at + 9 < len(head):  # image descriptor: left, top, width, height
-            frame_w, frame_h = struct.unpack("<HH", head[at + 5:at + 9])
-            return "GIF", max(width, frame_w), max(height, frame_h)
-        if block != 0x21 or at + 2 >= len(head):  # not an extension: trailer or damage
+        steps += 1
+        if block == 0x3B:  # the trailer
             break
-        at += 2  # introducer and label, then sub-blocks until an empty one
-        while at < len(head) and head[at]:
+        if block == 0x2C:  # image descriptor: left, top, width, height, flags
+            if at + 10 > len(head):
+                break
+            left, top, frame_w, frame_h, flags = struct.unpack("<HHHHB", head[at + 1:at + 10])
+            width, height = max(width, left + frame_w), max(height, top + frame_h)
+            at += 10 + (3 * (2 << (flags & 0x07)) if flags & 0x80 else 0) + 1  # + LZW size
+        elif block == 0x21:  # extension: introducer and label
+            at += 2
+        else:  # SDL_image ignores a stray byte; so does this walk
+            at += 1
+            continue
+        while at < len(head) and head[at] and steps < MAX_GIF_STEPS:  # data sub-blocks
             at += head[at] + 1
+            steps += 1
         at += 1
+    if steps >= MAX_GIF_STEPS:
+        return None  # too many blocks to measure: its size cannot be known before decoding
     return "GIF", width, height
 
 
@@ -151,9 +171,45 @@ def charge_pixels(findings: Findings, where: str, path: Path, width: int, height
     ``budget``); fail if it takes the level over."""
     budget = budget or _BUDGETS.setdefault(findings, PixelBudget())
     if not budget.spend(width, height):
-        findings.fail(where, f"the image {path.name} ({width}x{height}) takes the level's "
-                      f"images over {budget.limit:,} pixels in all",
+        findings.fail(where, f"the image {escaped(path.name)} ({width}x{height}) takes the "
+                      f"level's images over {budget.limit:,} pixels in all",
                       "use fewer or smaller images: one tileset image can hold many tiles")
+
+
+_DECODED: WeakKeyDictionary[Findings, dict[Path, pygame.Surface]] = WeakKeyDictionary()
+
+
+def load_image(path: Path, findings: Findings, where: str, what: str,
+               budget: PixelBudget | None = None) -> pygame.Surface:
+    """The image at ``path``, decoded from the very bytes whose header was measured; fail
+    with a sentence if it cannot be used. Each image is decoded once per level read."""
+    known = _DECODED.setdefault(findings, {})
+    name = f"the {what} {escaped(path.name)}"
+    data = read_level_file(path, findings, where, name.removeprefix("the "), MAX_IMAGE_BYTES,
+                           FIX_IMAGE, missing=(f"{name} is missing ({escaped(str(path))})",
+                                               "put the image back, or pick another in the "
+                                               "tileset's Image property"))
+    size = header_size(data)
+    if size is None:
+        findings.fail(where, f"{name} is not a {FORMATS} image whose size the game can read",
+                      FIX_IMAGE)
+    kind, width, height = size
+    if not (1 <= width <= MAX_IMAGE_PX and 1 <= height <= MAX_IMAGE_PX):
+        findings.fail(where, f"{name} says it is a {width}x{height} {kind}; the game reads "
+                      f"images of 1 to {MAX_IMAGE_PX} pixels a side", FIX_IMAGE)
+    charge_pixels(findings, where, path, width, height, budget)
+    if path in known:
+        return known[path]
+    try:  # the same bytes, typed by what they were measured as: no other decoder is asked
+        image = pygame.image.load(io.BytesIO(data), f"image.{kind.lower()}")
+    except (pygame.error, OSError, ValueError, MemoryError) as error:
+        findings.fail(where, f"{name} cannot be decoded ({excerpt(str(error))})", FIX_IMAGE)
+    decoded = image.get_size()
+    if decoded != (width, height):
+        findings.fail(where, f"{name} decodes to {decoded[0]}x{decoded[1]}, not the "
+                      f"{width}x{height} its header says", FIX_IMAGE)
+    known[path] = image
+    return image
 
 
 def check_image(path: Path, findings: Findings, where: str, what: str,
@@ -163,37 +219,5 @@ def check_image(path: Path, findings: Findings, where: str, what: str,
 
     ``budget`` defaults to the one of the level ``findings`` belongs to, so every image
     checked while reading one level counts against that level's pixels."""
-    name = f"the {what} {path.name}"
-    try:
-        status = path.stat()
-    except (FileNotFoundError, NotADirectoryError):
-        findings.fail(where, f"{name} is missing ({path})",
-                      "put the image back, or pick another in the tileset's Image property")
-    except (OSError, ValueError) as error:
-        findings.fail(where, f"{name} cannot be read ({error})", FIX_IMAGE)
-    if not stat.S_ISREG(status.st_mode):
-        findings.fail(where, f"{name} is not a regular file", FIX_IMAGE)
-    if status.st_size > MAX_IMAGE_BYTES:
-        findings.fail(where, f"{name} is larger than {MAX_IMAGE_BYTES // 2**20} MB", FIX_IMAGE)
-    try:
-        with path.open("rb") as stream:
-            head = stream.read(HEADER_BYTES)
-    except OSError as error:
-        findings.fail(where, f"{name} cannot be read ({error.strerror or error})", FIX_IMAGE)
-    size = header_size(head)
-    if size is None:
-        findings.fail(where, f"{name} is not a {FORMATS} image whose size the game can read",
-                      FIX_IMAGE)
-    kind, width, height = size
-    if not (1 <= width <= MAX_IMAGE_PX and 1 <= height <= MAX_IMAGE_PX):
-        findings.fail(where, f"{name} says it is a {width}x{height} {kind}; the game reads "
-                      f"images of 1 to {MAX_IMAGE_PX} pixels a side", FIX_IMAGE)
-    charge_pixels(findings, where, path, width, height, budget)
-    try:
-        decoded = pygame.image.load(str(path)).get_size()
-    except (pygame.error, OSError, ValueError, MemoryError) as error:
-        findings.fail(where, f"{name} cannot be decoded ({error})", FIX_IMAGE)
-    if decoded != (width, height):
-        findings.fail(where, f"{name} decodes to {decoded[0]}x{decoded[1]}, not the "
-                      f"{width}x{height} its header says", FIX_IMAGE)
-    return decoded
+    width, height = load_image(path, findings, where, what, budget).get_size()
+    return width, height

@@ -7,6 +7,8 @@ Tiled would come out under them; and it does not look into groups for this order
 What it teaches: a Tiled map is a tree. Groups nest; a group's offset moves everything in
 it, its opacity multiplies and a hidden group hides its children. Walking the tree once,
 depth first, gives each leaf layer in document order with those settings already combined.
+Numbers are checked where they are combined: a layer's offset and its groups' may each be
+finite and their sum overflow to infinity, so the sum is what is checked.
 
 >>> from pathlib import Path
 >>> root = ET.fromstring('<map><layer name="sky"/><group name="g" offsetx="2.5" opacity="0.5">'
@@ -28,6 +30,7 @@ from game.levels.errors import Findings
 LEAF_TAGS = ("layer", "objectgroup", "imagelayer")
 MAX_GROUP_DEPTH = 32
 MAX_LAYERS = 1_000
+MAX_OFFSET_PX = 1_000_000  # a layer moved further is off every map the game reads
 MAX_PARALLAX = 100.0  # a factor further from 0 than this scrolls a layer off in a blink
 
 
@@ -64,6 +67,11 @@ def _walk(parent: ET.Element, findings: Findings, offset: tuple[float, float],
         where = f"layer '{name}'"
         ox = offset[0] + number(child.attrib, "offsetx", findings, where, 0.0)
         oy = offset[1] + number(child.attrib, "offsety", findings, where, 0.0)
+        if not (abs(ox) <= MAX_OFFSET_PX and abs(oy) <= MAX_OFFSET_PX):  # inf and nan too
+            findings.fail(where, f"its offset, added to its groups', is ({ox:g}, {oy:g}), "
+                          f"further than the {MAX_OFFSET_PX:,} px a layer may be moved",
+                          "set the Offset of the layer and of its groups back to 0, 0 in "
+                          "Tiled's Layer Properties")
         alpha = opacity * min(1.0, max(0.0, number(child.attrib, "opacity", findings, where,
                                                    1.0)))
         shown = visible and child.get("visible", "1") != "0"

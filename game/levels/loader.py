@@ -35,10 +35,11 @@ from __future__ import annotations
 
 import contextlib
 import xml.etree.ElementTree as ET
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from game.levels import pytmx_bridge
+from game.levels.budget import MAX_ANIMATED_CELLS
 from game.levels.classes import LEVEL, TILE_KINDS
 from game.levels.entities import build_entities
 from game.levels.errors import Findings, LevelError, excerpt
@@ -46,7 +47,7 @@ from game.levels.header import MAX_TOTAL_CELLS, MapHeader, read_header
 from game.levels.images import check_image
 from game.levels.layers import LayerNode, walk_layers
 from game.levels.objects import read_objects
-from game.levels.paths import Sandbox, real, resolve, sandbox_for
+from game.levels.paths import Sandbox, check_map_file, real, resolve, sandbox_for
 from game.levels.properties import Value, read_properties
 from game.levels.solids import build_grid
 from game.levels.templates import Templates
@@ -206,14 +207,27 @@ def _split_by_objects(layers: Sequence[LayerNode], drawn: Sequence[TileLayer]
     return behind, in_front
 
 
+def _check_animated_cells(layers: Sequence[TileLayer], animations: Mapping[int, object],
+                          findings: Findings) -> None:
+    """Fail if the drawn layers hold more animated cells than a frame can look at."""
+    if not animations:
+        return
+    count = sum(gid in animations for layer in layers for row in layer.gids for gid in row)
+    if count > MAX_ANIMATED_CELLS:
+        findings.fail("map", f"its drawn layers hold {count:,} animated tiles, more than the "
+                      f"{MAX_ANIMATED_CELLS:,} the game animates in one level",
+                      "paint most of them with a still tile, or split the level")
+
+
 def _read(path: Path, findings: Findings, images: bool, check_images: bool,
           tuning: Tuning, folder: Path | None) -> Level:
     """Every step of loading, in order of trust; raises LevelError at the end if any step
     recorded an error."""
-    # 1. The file, and the grid its header describes.
+    # 1. The file (if it lies in its own sandbox), and the grid its header describes.
+    sandbox = sandbox_for(path, folder)
+    check_map_file(path, sandbox, findings)
     root = read_tiled_xml(path, "map", findings)
     header = read_header(root, findings)
-    sandbox = sandbox_for(path, folder)
 
     # 2. Tilesets and tile layers: what collides where.
     tilesets = read_tilesets(root, path, sandbox, findings, check_images)
@@ -239,6 +253,7 @@ def _read(path: Path, findings: Findings, images: bool, check_images: bool,
     behind, in_front = _split_by_objects(layers, pytmx_bridge.drawn_layers(
         tmx, [layer for layer, _gids in decoded], colliding))
     animated = pytmx_bridge.animated_tiles(tmx, [*behind, *in_front])
+    _check_animated_cells([*behind, *in_front], animated.animations, findings)
     next_level = properties.get("next_level")
     return Level(
         path=path, grid=grid, spawn=entities.spawn, coins=entities.coins,
@@ -273,3 +288,14 @@ def check_level(path: Path | str, folder: Path | None = None) -> Findings:
     with contextlib.suppress(LevelError):  # its errors are in findings
         _read(path, findings, images=False, check_images=True, tuning=Tuning(), folder=folder)
     return findings
+
+
+def files_read(path: Path | str, folder: Path | None = None) -> tuple[Path, ...]:
+    """Every file reading the map at ``path`` opens, as the checker reads it (images
+    included), in the order they were opened; as far as it got when the map is bad. This is
+    what ``--watch`` watches: the loader's own list, through the loader's own rules."""
+    path = Path(path)
+    findings = Findings(path)
+    with contextlib.suppress(LevelError):
+        _read(path, findings, images=False, check_images=True, tuning=Tuning(), folder=folder)
+    return (path, *(file for file in findings.files if file != path))

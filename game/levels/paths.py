@@ -31,7 +31,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from game.levels.errors import Findings, excerpt
+from game.levels.errors import Findings, escaped, excerpt
 
 PROJECT_FOLDERS = ("levels", "assets")
 FIX_OUTSIDE = ("move the file beside the map (or into the project's assets/ or levels/ "
@@ -44,7 +44,11 @@ def real(path: Path) -> Path:
 
 
 def _holds_project_folders(folder: Path) -> bool:
-    return all((folder / name).is_dir() for name in PROJECT_FOLDERS)
+    """True when ``folder`` holds real ``levels/`` and ``assets/`` folders: a symbolic link
+    in their place (``assets -> /``) would make every file on the machine a project file,
+    so a folder with one is not a project."""
+    return all((folder / name).is_dir() and not (folder / name).is_symlink()
+               for name in PROJECT_FOLDERS)
 
 
 @dataclass(frozen=True)
@@ -60,7 +64,7 @@ class Sandbox:
 
     def describe(self) -> str:
         """The allowed folders, for a message."""
-        return " or ".join(str(root) for root in self.roots)
+        return " or ".join(escaped(str(root)) for root in self.roots)
 
 
 def project_root(map_path: Path,
@@ -89,6 +93,19 @@ def sandbox_for(map_path: Path, folder: Path | None = None) -> Sandbox:
     project = project_root(map_path)
     shared = tuple(real(project / name) for name in PROJECT_FOLDERS) if project else ()
     return Sandbox((own, *(root for root in shared if root != own)))
+
+
+def check_map_file(map_path: Path, sandbox: Sandbox, findings: Findings) -> None:
+    """Fail if the map itself is a symbolic link that leads out of its sandbox: a link named
+    like a level is read like any other file the level names."""
+    try:
+        inside = sandbox.allows(map_path)
+    except (OSError, ValueError):
+        inside = False
+    if not inside:
+        findings.fail("", f"the map is a link that leads outside its folder; a level may "
+                      f"only use files in {sandbox.describe()}",
+                      "copy the map itself into the folder instead of linking to it")
 
 
 def resolve(reference: str, relative_to: Path, sandbox: Sandbox, findings: Findings,

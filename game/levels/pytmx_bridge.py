@@ -24,15 +24,16 @@ height="1"><data encoding="csv">1,2147483649</data></layer></map>'
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, NamedTuple
 
 import pygame
 from pytmx.util_pygame import handle_transformation
 
-from game.levels.errors import Findings
+from game.levels.errors import Findings, LevelError, excerpt
 from game.levels.header import MapHeader
+from game.levels.images import load_image
 from game.levels.layers import LayerNode
 from game.levels.tilesets import Tileset, Tilesets
 from game.sim.level import Animation, TileLayer
@@ -83,6 +84,29 @@ def clean_map(header: MapHeader, tilesets: Tilesets,
     return root
 
 
+def _image_loader(findings: Findings) -> Callable[..., Any]:
+    """pytmx's image loader, but every image comes through :func:`load_image`: read by the
+    sandbox's open, measured and decoded from the same bytes (and decoded once, if the
+    checks already did), never opened by pytmx from a path."""
+    from pytmx.util_pygame import smart_convert
+
+    def load(filename: str, colorkey: Any, **kwargs: Any) -> Callable[..., pygame.Surface]:
+        image = load_image(Path(filename), findings, "", "tile image")
+        key = pygame.Color(f"#{colorkey}") if colorkey else None
+        pixelalpha = kwargs.get("pixelalpha", True)
+
+        def cut(rect: Any = None, flags: Any = None) -> pygame.Surface:
+            tile = image.subsurface(rect) if rect else image.copy()
+            if flags:
+                tile = handle_transformation(tile, flags)
+            converted: pygame.Surface = smart_convert(tile, key, pixelalpha)
+            return converted
+
+        return cut
+
+    return load
+
+
 def parse(path: Path, document: ET.Element, images: bool, findings: Findings) -> Any:
     """pytmx's TiledMap of the clean document; with ``images``, tile images are loaded
     (which needs ``pygame.display.set_mode`` first)."""
@@ -90,15 +114,18 @@ def parse(path: Path, document: ET.Element, images: bool, findings: Findings) ->
     import pytmx.pytmx
     import pytmx.util_pygame
 
-    loader = pytmx.util_pygame.pygame_image_loader if images else pytmx.pytmx.default_image_loader
+    loader = _image_loader(findings) if images else pytmx.pytmx.default_image_loader
     try:
         tmx = pytmx.TiledMap(image_loader=loader, allow_duplicate_names=True)
         tmx.filename = str(path)  # pytmx joins image paths to its folder; ours are absolute
         tmx.parse_xml(document)
+    except LevelError:  # an image refused by load_image: its own sentence
+        raise
     except (FileNotFoundError, pygame.error, ValueError) as error:
-        findings.fail("", f"a tile image cannot be loaded ({error})", FIX_IMAGES)
+        findings.fail("", f"a tile image cannot be loaded ({excerpt(str(error))})", FIX_IMAGES)
     except Exception as error:  # pytmx raises bare Exceptions
-        findings.fail("", f"pytmx could not read the map ({type(error).__name__}: {error})",
+        findings.fail("", f"pytmx could not read the map ({type(error).__name__}: "
+                      f"{excerpt(str(error))})",
                       "open the map in Tiled and save it again")
     return tmx
 

@@ -23,6 +23,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from game.collision.aabb import Box
+from game.levels.budget import FIX_SHAPES, MAX_SHAPES
 from game.levels.classes import TILE_KINDS
 from game.levels.errors import Findings
 from game.levels.header import MapHeader
@@ -82,6 +83,7 @@ def build_grid(header: MapHeader, layers: Sequence[tuple[LayerNode, Sequence[int
     """The collision grid of all tile layers; a GID no tileset owns is an error."""
     grid = TileGrid(header.cols, header.rows, header.tile_w, header.tile_h)
     cache: dict[int, Offsets | None] = {}
+    made = 0  # shapes put in the grid so far: counted before each is made
     for layer, gids in layers:
         unknown: list[int] = []
         for index, raw in enumerate(gids):
@@ -94,6 +96,11 @@ def build_grid(header: MapHeader, layers: Sequence[tuple[LayerNode, Sequence[int
                 unknown.append(index)
                 continue
             row, col = divmod(index, header.cols)
+            made += len(shapes)
+            if made > MAX_SHAPES:
+                findings.fail(layer.place, f"the map's tiles make more than {MAX_SHAPES:,} "
+                              "collision shapes, the most the game builds for one map",
+                              f"{FIX_SHAPES}, or paint fewer colliding tiles")
             left, top = col * header.tile_w, row * header.tile_h
             for kind, (x, y, w, h) in shapes:
                 grid.put(col, row, TileShape(Box(left + x, top + y, w, h), kind, col, row))

@@ -1,7 +1,7 @@
 """Open one Tiled XML file (a map, a tileset or a template) without trusting it.
 
 Where it sits: the first step of loading a level, and of every tileset and template the
-level uses. Nothing else in :mod:`game.levels` opens a file.
+level uses; the file itself is opened by :mod:`game.levels.reading`.
 
 What it teaches: a file from outside is checked before it is parsed. Only a regular file is
 read (a folder, a pipe or ``/dev/zero`` is refused, so nothing can hang waiting for input);
@@ -13,13 +13,12 @@ and the root element must be the kind of file that was expected.
 
 from __future__ import annotations
 
-import os
-import stat
 import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import Literal
 
-from game.levels.errors import Findings
+from game.levels.errors import Findings, escaped, excerpt
+from game.levels.reading import read_level_file
 
 Kind = Literal["map", "tileset", "template"]
 
@@ -46,49 +45,15 @@ def is_json_name(name: str) -> bool:
 def refuse_json(findings: Findings, where: str, kind: Kind, name: str) -> None:
     """Fail with Tiled's advice when ``name`` is a JSON file."""
     if is_json_name(name):
-        findings.fail(where, f"{name} is Tiled's JSON format; the game reads "
+        findings.fail(where, f"{excerpt(name)} is Tiled's JSON format; the game reads "
                       f"{TMX_SUFFIX[kind]} files", SAVE_AS[kind])
 
 
-def _reason(error: Exception) -> str:
-    return (error.strerror if isinstance(error, OSError) else None) or str(error)
-
-
 def _read_bytes(path: Path, findings: Findings, where: str, kind: Kind) -> bytes:
-    what = "map" if kind == "map" else f"{kind} file {path.name}"
+    what = "map" if kind == "map" else f"{kind} file {escaped(path.name)}"
     refuse_json(findings, where, kind, path.name)
-    try:  # non-blocking, so that a pipe named like a map cannot make us wait
-        descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-    except (FileNotFoundError, NotADirectoryError):
-        findings.fail(where, f"the {what} does not exist",
-                      "check the path, or save the file from Tiled first")
-    except (OSError, ValueError) as error:
-        findings.fail(where, f"the {what} cannot be opened ({_reason(error)})",
-                      "check the path and that you may read the file")
-    try:
-        status = os.fstat(descriptor)
-    except OSError as error:
-        os.close(descriptor)
-        findings.fail(where, f"the {what} cannot be read ({_reason(error)})",
-                      "check that you may read the file")
-    if stat.S_ISDIR(status.st_mode):
-        os.close(descriptor)  # open() would refuse a folder with a traceback
-        findings.fail(where, f"this is a folder, not a {kind}",
-                      f"give the path of a {TMX_SUFFIX[kind]} file")
-    with os.fdopen(descriptor, "rb") as stream:
-        mode, size = status.st_mode, status.st_size
-        if not stat.S_ISREG(mode):
-            findings.fail(where, f"the {what} is not a regular file (a device or a pipe?)",
-                          f"give the path of a {TMX_SUFFIX[kind]} file saved by Tiled")
-        try:
-            data = stream.read(MAX_FILE_BYTES + 1) if size <= MAX_FILE_BYTES else b""
-        except OSError as error:
-            findings.fail(where, f"the {what} cannot be read ({_reason(error)})",
-                          "check that you may read the file")
-    if size > MAX_FILE_BYTES or len(data) > MAX_FILE_BYTES:
-        findings.fail(where, f"the {what} is larger than {MAX_FILE_BYTES // 2**20} MB",
-                      "split the level into smaller maps, or use base64-zlib tile data")
-    return data
+    return read_level_file(path, findings, where, what, MAX_FILE_BYTES,
+                           "split the level into smaller maps, or use base64-zlib tile data")
 
 
 def _sniff(data: bytes, findings: Findings, where: str, kind: Kind) -> None:
@@ -114,16 +79,17 @@ def read_tiled_xml(path: Path, kind: Kind, findings: Findings, where: str = "") 
         root = ET.fromstring(data)
     except ET.ParseError as error:
         line, column = error.position
-        findings.fail(where, f"the XML of {path.name} is damaged at line {line}, "
+        findings.fail(where, f"the XML of {excerpt(path.name)} is damaged at line {line}, "
                       f"column {column}",
                       "undo the hand edit, or restore the file from a backup")
     except (LookupError, ValueError) as error:  # an encoding="..." Python cannot decode
-        findings.fail(where, f"the XML of {path.name} is in a text encoding the game cannot "
-                      f"read ({error})", "save it from Tiled, which writes UTF-8")
+        findings.fail(where, f"the XML of {excerpt(path.name)} is in a text encoding the "
+                      f"game cannot read ({excerpt(str(error))})",
+                      "save it from Tiled, which writes UTF-8")
     if root.tag == kind:
         return root
     if root.tag == "tileset" and kind == "map":
         findings.fail(where, "this is a tileset (.tsx), not a map",
                       "check the .tmx map that uses it instead")
-    findings.fail(where, f"{path.name} holds a <{root.tag}>, not a Tiled {kind}",
+    findings.fail(where, f"{excerpt(path.name)} holds a <{excerpt(root.tag)}>, not a Tiled {kind}",
                   f"give the path of a {TMX_SUFFIX[kind]} file saved by Tiled")

@@ -30,6 +30,7 @@ from pathlib import Path
 
 from game.collision.aabb import Box
 from game.levels.attributes import number, whole
+from game.levels.budget import FIX_SHAPES, MAX_SHAPES_PER_TILE, MAX_TILES_CUT
 from game.levels.classes import CLASSES, CLASSES_BY_NAME
 from game.levels.errors import Findings, excerpt
 from game.levels.header import MAX_TILE_PX
@@ -86,6 +87,13 @@ class Tileset:
     def last_gid(self) -> int:
         return self.firstgid + self.span - 1
 
+    @property
+    def cut(self) -> int:
+        """The places of its image that are cut into tiles when the map is read."""
+        if self.image is None:
+            return 0
+        return _cut(self.image_size, self.tile_w, self.tile_h, self.spacing)
+
 
 class Tilesets:
     """A map's tilesets, by GID."""
@@ -134,6 +142,9 @@ def _collision_boxes(tile: ET.Element, findings: Findings, where: str) -> tuple[
         w, h = (number(shape.attrib, a, findings, where, 0.0) for a in ("width", "height"))
         if w > 0 and h > 0:
             boxes.append(Box(x, y, w, h))
+            if len(boxes) > MAX_SHAPES_PER_TILE:
+                findings.fail(where, f"the tile has more than {MAX_SHAPES_PER_TILE} collision "
+                              "rectangles, the most the game reads for one tile", FIX_SHAPES)
     return tuple(boxes)
 
 
@@ -189,6 +200,12 @@ def _image(node: ET.Element, base: Path, root: Sandbox, findings: Findings, wher
     return image, size, trans
 
 
+def _cut(image_size: tuple[int, int], tile_w: int, tile_h: int, spacing: int) -> int:
+    """The places pytmx visits when it cuts an image into tiles (once per mention)."""
+    return ((image_size[0] + spacing) // (tile_w + spacing)) * (
+        (image_size[1] + spacing) // (tile_h + spacing))
+
+
 def _grid(node: ET.Element, tile_w: int, tile_h: int, image_size: tuple[int, int],
           findings: Findings, where: str) -> tuple[int, int, int, int]:
     """Spacing, margin, columns and tile count, derived from the image where Tiled left them
@@ -197,8 +214,7 @@ def _grid(node: ET.Element, tile_w: int, tile_h: int, image_size: tuple[int, int
     margin = whole(node.attrib, "margin", findings, where, 0, high=MAX_TILE_PX)
     fit_x = max(0, (image_size[0] - 2 * margin + spacing) // (tile_w + spacing))
     fit_y = max(0, (image_size[1] - 2 * margin + spacing) // (tile_h + spacing))
-    cut = ((image_size[0] + spacing) // (tile_w + spacing)) * (
-        (image_size[1] + spacing) // (tile_h + spacing))  # the places pytmx will visit
+    cut = _cut(image_size, tile_w, tile_h, spacing)
     if cut > MAX_TILES:
         findings.fail(where, f"its {image_size[0]}x{image_size[1]} image cuts into {cut:,} "
                       f"tiles of {tile_w}x{tile_h}, more than the {MAX_TILES:,} the game reads",
@@ -311,6 +327,12 @@ def read_tilesets(map_root: ET.Element, map_path: Path, root: Sandbox, findings:
     cache: dict[Path, Tileset] = {}
     tilesets = Tilesets(_read_tileset(element, map_path.parent, root, findings, check_images,
                                       cache) for element in elements)
+    cut = sum(tileset.cut for tileset in tilesets.all)
+    if cut > MAX_TILES_CUT:
+        findings.fail("map", f"its tilesets cut {cut:,} tiles out of their images, each "
+                      f"time a tileset is named; the game cuts at most {MAX_TILES_CUT:,} "
+                      "for one map", "name each tileset once, and use larger tiles or "
+                      "smaller images in the Tileset Properties")
     total = sum(tileset.span for tileset in tilesets.all)
     if total > MAX_MAP_TILES:
         findings.fail("map", f"its tilesets hold {total:,} tiles, more than the "

@@ -102,7 +102,10 @@ class InputScript:
 
     @classmethod
     def parse(cls, text: str, name: str) -> InputScript:
+        """Read a script's text; a UTF-8 byte-order mark (Windows' Notepad writes one) is
+        not part of the first line."""
         events: list[InputEvent] = []
+        text = text.removeprefix("\ufeff")
         for number, raw in enumerate(text.splitlines(), start=1):
             line = raw.split("#", 1)[0].strip()
             if not line:
@@ -134,12 +137,24 @@ class InputScript:
 
 @dataclass
 class Recorder:
-    """Turns the held actions of each tick back into script events."""
+    """Turns the held actions of each tick back into script events.
+
+    ``keep=False`` (a run that does not ``--record``) keeps nothing: a million ticks of
+    play then cost no memory for a history nobody will write.
+
+    >>> quiet = Recorder(keep=False)
+    >>> quiet.observe(0, frozenset({Action.JUMP}))
+    >>> quiet.events
+    []
+    """
 
     events: list[InputEvent] = field(default_factory=list)
+    keep: bool = True
     _last: Actions = NOTHING
 
     def observe(self, tick: int, held: Actions) -> None:
+        if not self.keep:
+            return
         for action in Action:  # a fixed order keeps recordings identical run to run
             if action in held and action not in self._last:
                 self.events.append(InputEvent(tick, True, action))
