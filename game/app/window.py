@@ -41,6 +41,7 @@ from game.app.menus import (
     RestartLevel,
     Screen,
     StartLevel,
+    ToggleTimer,
     campaign_levels,
     cleared,
     ended,
@@ -184,7 +185,10 @@ def play_in_window(run: Run) -> int:
                 if isinstance(command, QuitGame):
                     run.write_outputs(pygame.display.get_surface())
                     return EXIT_OK
-                if command is not None and (problem := _obey(command, run)) is not None:
+                if isinstance(command, ToggleTimer):
+                    settings.hud_timer = not settings.hud_timer
+                    notice = settings_store.save(settings.to_json()) or notice
+                elif command is not None and (problem := _obey(command, run)) is not None:
                     menus, notice = before, problem  # stay on the menu and say why
                 if menus.screen is Screen.PLAYING and before.screen is not Screen.PLAYING:
                     held_over.begin(held_keys(keys) | pads.held(buttons))
@@ -239,7 +243,8 @@ def play_in_window(run: Run) -> int:
             if run.finished() and (scripted or run.args.ticks is not None):
                 run.write_outputs(render_frame(
                     run.campaign, debug=debug, renderer=renderer, fps=clock.get_fps(),
-                    update_ms=run.last_update_ms, debug_lines=stepping.lines(run.campaign.ticks)))
+                    update_ms=run.last_update_ms, debug_lines=stepping.lines(run.campaign.ticks),
+                    timer=settings.hud_timer))
                 return EXIT_OK
             if banner is not None:
                 menus = cleared(menus)
@@ -274,10 +279,12 @@ def play_in_window(run: Run) -> int:
                          frame=run.campaign.ticks, fps=clock.get_fps(),
                          update_ms=run.last_update_ms,
                          world=banner.world if banner is not None else None,
-                         debug_lines=stepping.lines(run.campaign.ticks))
+                         debug_lines=stepping.lines(run.campaign.ticks),
+                         timer=settings.hud_timer)
         if banner is not None:
             banner.draw(target, assets)
-        _draw_screen(target, assets, menus, entries, run.campaign, frame, using_pad)
+        _draw_screen(target, assets, menus, entries, run.campaign, frame, using_pad,
+                     settings.hud_timer)
         if reload_error is not None:
             draw_error_banner(target, assets, RELOAD_FAILED + reload_error)
         elif notice is not None and menus.screen is not Screen.PLAYING:
@@ -304,14 +311,14 @@ def _obey(command: Command, run: Run) -> str | None:
 
 def _draw_screen(target: pygame.Surface, assets: Assets, menus: Menus,
                  entries: tuple[LevelEntry, ...], campaign: Campaign, frame: int,
-                 using_pad: bool) -> None:
+                 using_pad: bool, timer_on: bool) -> None:
     """The screen that is up: a menu in place of the world, or over it."""
     if menus.screen is Screen.TITLE:
         draw_title(target, assets, frame, menus.title_item, entries, pad=using_pad)
     elif menus.screen is Screen.LEVEL_SELECT:
         draw_level_select(target, assets, frame, entries, menus.level_item)
     elif menus.screen is Screen.PAUSED:
-        draw_pause(target, assets, menus.pause_item)
+        draw_pause(target, assets, menus.pause_item, timer_on=timer_on)
     elif menus.screen is Screen.ENDED:
         if campaign.outcome is Outcome.WON:
             draw_win(target, assets, campaign)

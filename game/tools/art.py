@@ -24,6 +24,7 @@ from __future__ import annotations
 import math
 import random
 from collections.abc import Callable, Mapping, Sequence
+from functools import partial
 
 import pygame
 
@@ -1447,8 +1448,8 @@ def place_images() -> dict[str, Callable[[], pygame.Surface]]:
     """Each place's two pictures, by the name they are written under in ``assets/places/``."""
     images: dict[str, Callable[[], pygame.Surface]] = {}
     for name, place in PLACES.items():
-        images[f"places/{name}-sky.png"] = lambda place=place: draw_place_sky(place)
-        images[f"places/{name}-scenery.png"] = lambda place=place: draw_place_scenery(place)
+        images[f"places/{name}-sky.png"] = partial(draw_place_sky, place)
+        images[f"places/{name}-scenery.png"] = partial(draw_place_scenery, place)
     return images
 
 
