@@ -5,6 +5,10 @@ shipped level, stopped at a chosen tick and saved with ``--screenshot`` (and ``-
 where the picture shows the overlay), exactly as a reader could run it by hand: the command
 for each is printed as it goes. The pictures land in ``assets/screenshots/``.
 
+``places.png`` is a contact sheet of the six shipped levels, one frame each (the same tick
+of each winning script, :data:`PLACES_TICK`), drawn with the window's own drawing code and
+captioned with the level's title and its ``setting``: six places, side by side.
+
 One picture cannot come from a headless run, because a headless run has no level-end
 banner (the banner is a pause of the window): ``level-end.png`` plays the first level's
 winning script in this process and draws its last frame with the window's own drawing code,
@@ -24,7 +28,9 @@ import pygame
 from game.app.assets import load_assets
 from game.app.banner import BANNER_S, Banner
 from game.app.frame import render_frame
-from game.levels import FIRST_LEVEL, load_level
+from game.app.hud import draw_text
+from game.app.places import place_of
+from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
 from game.sim.campaign import Campaign
 from game.sim.inputs import InputScript
@@ -81,6 +87,40 @@ def level_end_picture(path: Path) -> None:
     pygame.display.quit()
 
 
+PLACES_TICK = 300  # each level's frame on the contact sheet: 5 s into its winning script
+SHEET_COLUMNS = 2
+SHEET_GAP_PX = 2  # between the frames, in the sheet's dark
+SHEET_BACK = (20, 16, 32)
+
+
+def places_sheet(path: Path) -> None:
+    """The six shipped levels, one frame each, captioned ``N. Title (setting)``."""
+    os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+    pygame.display.init()
+    pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX))
+    assets = load_assets()
+    levels = sorted(LEVELS_DIR.glob("*.tmx"))
+    rows = -(-len(levels) // SHEET_COLUMNS)
+    sheet = pygame.Surface((SHEET_COLUMNS * (VIEW_W_PX + SHEET_GAP_PX) + SHEET_GAP_PX,
+                            rows * (VIEW_H_PX + SHEET_GAP_PX) + SHEET_GAP_PX))
+    sheet.fill(SHEET_BACK)
+    for number, level in enumerate(levels):
+        script = InputScript.load(ROOT / "tests" / "scripts" / f"{level.stem}.txt")
+        campaign = Campaign(level, loader=lambda p: load_level(p, images=True))
+        while campaign.ticks < PLACES_TICK and not campaign.results:
+            campaign.tick(script.held_at(campaign.ticks))
+        frame = render_frame(campaign, debug=False, assets=assets).copy()
+        world = campaign.world.level
+        caption = f"{number + 1}. {world.title} ({place_of(world.properties).name})"
+        draw_text(frame, assets.font, caption, (VIEW_W_PX // 2, VIEW_H_PX - 4),
+                  anchor="midbottom")
+        row, col = divmod(number, SHEET_COLUMNS)
+        sheet.blit(frame, (SHEET_GAP_PX + col * (VIEW_W_PX + SHEET_GAP_PX),
+                           SHEET_GAP_PX + row * (VIEW_H_PX + SHEET_GAP_PX)))
+    pygame.image.save(sheet, str(path))
+    pygame.display.quit()
+
+
 def main() -> None:
     SHOTS.mkdir(parents=True, exist_ok=True)
     for shot in SHOTS_TO_TAKE:
@@ -89,6 +129,8 @@ def main() -> None:
         subprocess.run(command, cwd=ROOT, check=True)
     print("level-end.png: the first level's winning script, drawn with the banner")
     level_end_picture(SHOTS / "level-end.png")
+    print(f"places.png: each shipped level at tick {PLACES_TICK} of its winning script")
+    places_sheet(SHOTS / "places.png")
 
 
 if __name__ == "__main__":
