@@ -13,6 +13,9 @@
   </objectgroup>
  </tile>
  <tile id="7" type="Solid"/>
+ <tile id="22" type="OneWay"/>
+ <tile id="23" type="OneWay"/>
+ <tile id="24" type="OneWay"/>
  <tile id="32" type="Solid"/>
  <tile id="33" type="Solid"/>
  <tile id="34" type="Solid"/>
@@ -108,6 +111,12 @@
    <wangtile tileid="75" wangid="1,1,1,0,1,1,1,1"/>
    <wangtile tileid="76" wangid="1,0,1,1,1,1,1,1"/>
    <wangtile tileid="77" wangid="1,1,1,1,1,1,1,1"/>
+  </wangset>
+  <wangset name="Planks" type="edge" tile="5">
+   <wangcolor name="Planks" color="#c8a165" tile="5" probability="1"/>
+   <wangtile tileid="5" wangid="0,0,1,0,0,0,1,0"/>
+   <wangtile tileid="22" wangid="0,0,1,0,0,0,0,0"/>
+   <wangtile tileid="23" wangid="0,0,0,0,0,0,1,0"/>
   </wangset>
  </wangsets>
 </tileset>

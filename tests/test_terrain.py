@@ -25,7 +25,8 @@ def test_the_tileset_file_is_the_one_the_art_script_writes() -> None:
 def test_the_tileset_declares_a_mixed_terrain_set_with_every_edge_and_corner() -> None:
     root = ET.parse(ASSETS / "tiles.tsx").getroot()
     wangsets = root.findall("wangsets/wangset")
-    assert [w.get("type") for w in wangsets] == ["mixed"]
+    assert [(w.get("name"), w.get("type")) for w in wangsets] == [("Ground", "mixed"),
+                                                                  ("Planks", "edge")]
     tiles = {int(t.get("tileid", "-1")): t.get("wangid", "") for t in wangsets[0].iter("wangtile")}
     classes = {int(t.get("id", "-1")): t.get("type") for t in root.iter("tile")}
     assert len(tiles) == 46  # the 47 blob looks, less the lone block, which has no neighbour
@@ -70,3 +71,18 @@ def test_repainting_a_map_fixes_a_hand_placed_ground_tile() -> None:
     spoiled = text.replace(rows[first_grass], ",".join(row), 1)
     assert spoiled != text
     assert terrain.repaint_map(spoiled) == text
+
+
+def test_the_planks_end_where_their_row_stops_and_stay_one_way() -> None:
+    root = ET.parse(ASSETS / "tiles.tsx").getroot()
+    planks = root.findall("wangsets/wangset")[1]
+    classes = {int(t.get("id", "-1")): t.get("type") for t in root.iter("tile")}
+    wang = {t.get("wangid"): int(t.get("tileid", "-1")) for t in planks.iter("wangtile")}
+    assert set(wang) == {"0,0,1,0,0,0,1,0", "0,0,1,0,0,0,0,0", "0,0,0,0,0,0,1,0"}
+    assert all(classes[tile_id] == "OneWay" for tile_id in wang.values())
+    first = 1  # the tileset's first gid in a map
+    row = [[0, first + art.ONE_WAY, first + art.ONE_WAY, first + art.ONE_WAY, 0,
+            first + art.ONE_WAY]]
+    assert terrain.repaint_rows(row, first) == [[0, first + art.PLANK_LEFT, first + art.ONE_WAY,
+                                                 first + art.PLANK_RIGHT, 0,
+                                                 first + art.PLANK_LONE]]

@@ -158,6 +158,9 @@ FENCE = 18
 BLUE_FLOWER = 19
 PEBBLES = 20
 TALL_GRASS = 21
+PLANK_LEFT = 22
+PLANK_RIGHT = 23
+PLANK_LONE = 24
 
 TILE_CLASSES: dict[int, str] = {
     GROUND: "Solid",
@@ -166,6 +169,9 @@ TILE_CLASSES: dict[int, str] = {
     GROUND_LEFT: "Solid",
     GROUND_RIGHT: "Solid",
     ONE_WAY: "OneWay",
+    PLANK_LEFT: "OneWay",
+    PLANK_RIGHT: "OneWay",
+    PLANK_LONE: "OneWay",
     SPIKES: "Hazard",
     LONE_BLOCK: "Solid",
 }
@@ -351,6 +357,15 @@ TERRAIN_LAST = max(TERRAIN_IDS)
 TILE_CLASSES.update({tile_id: "Solid" for tile_id in TERRAIN_IDS})
 TERRAIN_NAME = "Ground"  # the Wang set and its one colour, as Tiled's Terrain Sets list them
 TERRAIN_COLOR = "#8c6d46"
+PLANKS_NAME = "Planks"
+PLANKS_COLOR = "#c8a165"
+PLANK_MASKS = {ONE_WAY: EAST | WEST, PLANK_LEFT: EAST, PLANK_RIGHT: WEST, PLANK_LONE: 0}
+
+
+def plank_tile_id(mask: int) -> int:
+    """The plank tile for a one-way cell with planks to its ``EAST`` and/or ``WEST``."""
+    mask &= EAST | WEST
+    return next(tile_id for tile_id, tile_mask in PLANK_MASKS.items() if tile_mask == mask)
 GRASS_SIDE = (  # where grass meets the open side of a top corner: it hangs over the edge
     "..oo",
     ".oll",
@@ -484,8 +499,19 @@ PLANK_BOLT = (
 PLANK_BOLT_COLUMNS = (2, 12)
 
 
-def draw_one_way(tile: pygame.Surface) -> None:
-    """Tile 5: bolted wooden plank in the top PLANK_HEIGHT rows (one-way)."""
+PLANK_END = (  # the open end of a row of planks: outlined and rounded, over its left edge
+    ".o",
+    "ol",
+    "ow",
+    "od",
+    ".o",
+)
+
+
+def draw_one_way(tile: pygame.Surface, open_left: bool = False,
+                 open_right: bool = False) -> None:
+    """Tile 5: bolted wooden plank in the top PLANK_HEIGHT rows (one-way), joined to more
+    planks on both sides; ``open_left`` / ``open_right`` end it there with an outline."""
     if len(PLANK) != PLANK_HEIGHT:
         raise ValueError("PLANK must be PLANK_HEIGHT rows tall")
     colors = {"o": OUTLINE, "l": WOOD_LIGHT, "w": WOOD, "d": WOOD_DARK}
@@ -496,6 +522,28 @@ def draw_one_way(tile: pygame.Surface) -> None:
     # Joints between boards, so a row of planks reads as separate boards.
     tile.set_at((0, 2), WOOD_DARK)
     tile.set_at((TILE - 1, 2), WOOD_DARK)
+    clear = (0, 0, 0, 0)
+    if open_left:
+        tile.fill(clear, (0, 0, 2, PLANK_HEIGHT))
+        paint(tile, PLANK_END, colors)
+    if open_right:
+        tile.fill(clear, (TILE - 2, 0, 2, PLANK_HEIGHT))
+        paint(tile, [row[::-1] for row in PLANK_END], colors, TILE - 2)
+
+
+def draw_plank_left(tile: pygame.Surface) -> None:
+    """Tile 22: the left end of a row of planks (one-way)."""
+    draw_one_way(tile, open_left=True)
+
+
+def draw_plank_right(tile: pygame.Surface) -> None:
+    """Tile 23: the right end of a row of planks (one-way)."""
+    draw_one_way(tile, open_right=True)
+
+
+def draw_plank_lone(tile: pygame.Surface) -> None:
+    """Tile 24: one plank on its own, ended on both sides (one-way)."""
+    draw_one_way(tile, open_left=True, open_right=True)
 
 
 SPIKE = (
@@ -791,6 +839,9 @@ TILE_PAINTERS: dict[int, Painter] = {
     BLUE_FLOWER: draw_blue_flower,
     PEBBLES: draw_pebbles,
     TALL_GRASS: draw_tall_grass,
+    PLANK_LEFT: draw_plank_left,
+    PLANK_RIGHT: draw_plank_right,
+    PLANK_LONE: draw_plank_lone,
     **{tile_id: terrain_painter(mask) for tile_id, mask in TERRAIN_IDS.items()
        if tile_id != LONE_BLOCK},
 }
@@ -846,9 +897,10 @@ def wang_id(mask: int) -> str:
 
 
 def wangsets_tsx() -> list[str]:
-    """The tileset's one terrain set (Tiled 1.8's ``<wangsets>``): a *mixed* set, so Tiled's
-    Terrain Brush and Terrain Fill pick each cell's tile from its eight neighbours. Every
-    tile of it is Solid, so painting terrain never changes what collides."""
+    """The tileset's terrain sets (Tiled 1.8's ``<wangsets>``): ``Ground``, a *mixed* set, so
+    Tiled's Terrain Brush picks each ground cell's tile from its eight neighbours; and
+    ``Planks``, an *edge* set whose ends close where a row of planks stops. Every tile of the
+    first is Solid and of the second OneWay, so painting never changes what collides."""
     top = terrain_tile_id(WEST | SOUTH_WEST | SOUTH | SOUTH_EAST | EAST)
     lines = [" <wangsets>",
              f'  <wangset name="{TERRAIN_NAME}" type="mixed" tile="{top}">',
@@ -856,6 +908,12 @@ def wangsets_tsx() -> list[str]:
              ' probability="1"/>']
     lines += [f'   <wangtile tileid="{tile_id}" wangid="{wang_id(mask)}"/>'
               for tile_id, mask in sorted(TERRAIN_IDS.items()) if mask]
+    lines.append("  </wangset>")
+    lines += [f'  <wangset name="{PLANKS_NAME}" type="edge" tile="{ONE_WAY}">',
+              f'   <wangcolor name="{PLANKS_NAME}" color="{PLANKS_COLOR}" tile="{ONE_WAY}"'
+              ' probability="1"/>']
+    lines += [f'   <wangtile tileid="{tile_id}" wangid="{wang_id(mask)}"/>'
+              for tile_id, mask in PLANK_MASKS.items() if mask]
     lines += ["  </wangset>", " </wangsets>"]
     return lines
 

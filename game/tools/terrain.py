@@ -9,9 +9,10 @@ Run from the repository root::
 Every cell of a tile layer that holds a ground tile of ``assets/tiles.tsx`` (the grass, the
 dirt, the old stone wall, the lone block or any terrain tile) gets the terrain tile that fits
 its eight neighbours: grass and an outline where it meets the air, sides, corners and inside
-corners. A neighbour is ground when it holds a ground tile of the same layer; past the map's
+corners. Every one-way plank gets the plank that fits its left and right neighbours, ended
+with an outline where its row stops. A neighbour is ground when it holds a ground tile of the same layer; past the map's
 left, right and bottom edges the ground is taken to go on, so no outline is drawn along the
-edge of the world. Every ground tile is Solid, so the set of solid, one-way and hazard cells
+edge of the world. Every ground tile is Solid and every plank OneWay, so the set of solid, one-way and hazard cells
 is the same before and after (``tests/test_terrain.py`` holds each shipped map to the grid
 it had). Only the CSV inside ``<data>`` is rewritten; objects and properties are untouched.
 
@@ -30,18 +31,23 @@ from pathlib import Path
 
 from game.tools.art import (
     DIRT_FILL,
+    EAST,
     GROUND,
     GROUND_LEFT,
     GROUND_RIGHT,
     LONE_BLOCK,
+    PLANK_MASKS,
     STONE_BRICK,
     TERRAIN_IDS,
     WANG_ORDER,
+    WEST,
+    plank_tile_id,
     terrain_tile_id,
 )
 
 GROUND_FAMILY = frozenset({GROUND, DIRT_FILL, STONE_BRICK, GROUND_LEFT, GROUND_RIGHT,
                            LONE_BLOCK, *TERRAIN_IDS})  # tile ids the terrain repaints
+PLANK_FAMILY = frozenset(PLANK_MASKS)  # one-way planks: their ends close where a row stops
 TILESET_NAME = "tiles.tsx"
 NEIGHBOURS = {bit: offset for bit, offset in zip(WANG_ORDER, (
     (0, -1), (1, -1), (1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1)), strict=True)}
@@ -64,23 +70,30 @@ def repaint_rows(rows: Sequence[Sequence[int]], firstgid: int,
     """
     height, width = len(rows), len(rows[0]) if rows else 0
 
-    def ground(col: int, row: int) -> bool:
-        if row >= height or col < 0 or col >= width:
-            return row >= 0  # beyond the left, right and bottom edges the ground goes on
-        if row < 0:
+    def of(family: frozenset[int], col: int, row: int) -> bool:
+        if not (0 <= row < height and 0 <= col < width):
             return False
         gid = rows[row][col]
         if not gid or gid & FLIP_BITS or (end is not None and gid >= end):
             return False
-        return gid - firstgid in GROUND_FAMILY
+        return gid - firstgid in family
+
+    def ground(col: int, row: int) -> bool:
+        if row >= height or col < 0 or col >= width:
+            return row >= 0  # beyond the left, right and bottom edges the ground goes on
+        return of(GROUND_FAMILY, col, row)
 
     painted = [list(line) for line in rows]
     for row in range(height):
         for col in range(width):
-            if not ground(col, row) or not rows[row][col]:
-                continue
-            mask = sum(bit for bit, (dx, dy) in NEIGHBOURS.items() if ground(col + dx, row + dy))
-            painted[row][col] = firstgid + terrain_tile_id(mask)
+            if of(GROUND_FAMILY, col, row):
+                mask = sum(bit for bit, (dx, dy) in NEIGHBOURS.items()
+                           if ground(col + dx, row + dy))
+                painted[row][col] = firstgid + terrain_tile_id(mask)
+            elif of(PLANK_FAMILY, col, row):
+                mask = (EAST if of(PLANK_FAMILY, col + 1, row) else 0) | (
+                    WEST if of(PLANK_FAMILY, col - 1, row) else 0)
+                painted[row][col] = firstgid + plank_tile_id(mask)
     return painted
 
 
