@@ -10,11 +10,12 @@ Every cell of a tile layer that holds a ground tile of ``assets/tiles.tsx`` (the
 dirt, the old stone wall, the lone block or any terrain tile) gets the terrain tile that fits
 its eight neighbours: grass and an outline where it meets the air, sides, corners and inside
 corners. Every one-way plank gets the plank that fits its left and right neighbours, ended
-with an outline where its row stops. A neighbour is ground when it holds a ground tile of the same layer; past the map's
-left, right and bottom edges the ground is taken to go on, so no outline is drawn along the
-edge of the world. Every ground tile is Solid and every plank OneWay, so the set of solid, one-way and hazard cells
-is the same before and after (``tests/test_terrain.py`` holds each shipped map to the grid
-it had). Only the CSV inside ``<data>`` is rewritten; objects and properties are untouched.
+with an outline where its row stops. A neighbour counts when it holds a tile of the same
+kind in the same layer; past the map's left, right and bottom edges the ground is taken to
+go on, so no outline is drawn along the edge of the world. Every ground tile is Solid and
+every plank OneWay, so the set of solid, one-way and hazard cells is the same before and
+after (``tests/test_terrain.py`` holds each shipped map to the grid it had). Only the CSV
+inside ``<data>`` is rewritten; objects and properties are untouched.
 
 What it teaches: autotiling is a lookup. Eight neighbours make a byte; corners count only
 when both edges beside them do (:func:`game.tools.art.blob_mask`), which leaves 47 looks;
