@@ -72,6 +72,9 @@ def test_the_six_places_differ_in_sky_scenery_and_ground() -> None:
     skies = {pygame.image.tobytes(art.draw_place_sky(p), "RGB") for p in PLACES.values()}
     scenery = {pygame.image.tobytes(art.draw_place_scenery(p), "RGBA") for p in PLACES.values()}
     grounds = {p.ground for p in PLACES.values()}
+    for place in PLACES.values():  # a swap done colour by colour must not swap twice
+        swap = place.ground_swap()
+        assert not set(swap.values()) & set(swap), place.name
     assert len(skies) == len(scenery) == len(grounds) == len(SETTINGS) == 6
 
 

@@ -11,9 +11,16 @@ Run from the repository root::
 
 This (re)writes, in ``assets/`` next to the ``game`` package:
 
-* ``tiles.png`` and ``tiles.tsx``: the 16x16 tileset and its Tiled tileset file
+* ``tiles.png`` and ``tiles.tsx``: the 16x16 tileset and its Tiled tileset file, with the
+  terrain sets that let Tiled paint ground and planks with their edges
 * ``player.png``, ``enemy.png``, ``coin.png``: horizontal sprite-sheet strips
-* ``exit.png``, ``heart.png``, ``background.png``: single images
+* ``exit.png``, ``heart.png``: single images
+* ``sky.png``, ``background.png`` and ``places/NAME-sky.png``, ``places/NAME-scenery.png``:
+  each place's still sky and scrolling scenery (the meadow's twice: the title screen's)
+
+The art direction every picture follows is written in ``assets/README.md``: one palette,
+light from the top left, an outline where what is in play meets the air, crimson only for
+what hurts, and a background without outlines that never reaches below the floor line.
 
 No display is needed: everything is drawn on off-screen ``SRCALPHA`` surfaces.
 The output is deterministic (noise comes from fixed-seed generators).
@@ -89,11 +96,9 @@ BACK_DIRT_DARK: RGB = (62, 42, 52)
 STONE_LIGHT: RGB = (190, 196, 214)
 STONE: RGB = (140, 146, 172)
 STONE_DARK: RGB = (96, 98, 130)
-MORTAR: RGB = (70, 66, 96)
 BACK_STONE_LIGHT: RGB = (104, 100, 136)
 BACK_STONE: RGB = (84, 80, 114)
 BACK_STONE_DARK: RGB = (66, 62, 94)
-BACK_MORTAR: RGB = (48, 42, 70)
 
 WOOD_LIGHT: RGB = (226, 172, 104)
 WOOD: RGB = (182, 122, 70)
@@ -138,7 +143,7 @@ CLOUD_SHADE: RGB = (214, 230, 250)
 
 GROUND = 0
 DIRT_FILL = 1
-STONE_BRICK = 2
+FIELDSTONE = 2
 GROUND_LEFT = 3
 GROUND_RIGHT = 4
 ONE_WAY = 5
@@ -165,7 +170,7 @@ PLANK_LONE = 24
 TILE_CLASSES: dict[int, str] = {
     GROUND: "Solid",
     DIRT_FILL: "Solid",
-    STONE_BRICK: "Solid",
+    FIELDSTONE: "Solid",
     GROUND_LEFT: "Solid",
     GROUND_RIGHT: "Solid",
     ONE_WAY: "OneWay",
@@ -480,7 +485,7 @@ def draw_fieldstone(tile: pygame.Surface, shades: tuple[RGB, RGB, RGB], seed: in
         tile.fill(dark, (stone.right - 1, stone.top + 2, 1, stone.height - 3))
 
 
-def draw_stone_brick(tile: pygame.Surface) -> None:
+def draw_fieldstone_wall(tile: pygame.Surface) -> None:
     """Tile 2: a fieldstone wall, pale stones in dirt (solid)."""
     draw_fieldstone(tile, (WHITE, PEBBLE, PEBBLE_SHADE), SEED + 3)
 
@@ -819,7 +824,7 @@ def draw_tall_grass(tile: pygame.Surface) -> None:
 TILE_PAINTERS: dict[int, Painter] = {
     GROUND: draw_ground,
     DIRT_FILL: draw_dirt_fill,
-    STONE_BRICK: draw_stone_brick,
+    FIELDSTONE: draw_fieldstone_wall,
     GROUND_LEFT: draw_ground_left,
     GROUND_RIGHT: draw_ground_right,
     ONE_WAY: draw_one_way,

@@ -33,12 +33,12 @@ from pathlib import Path
 from game.tools.art import (
     DIRT_FILL,
     EAST,
+    FIELDSTONE,
     GROUND,
     GROUND_LEFT,
     GROUND_RIGHT,
     LONE_BLOCK,
     PLANK_MASKS,
-    STONE_BRICK,
     TERRAIN_IDS,
     WANG_ORDER,
     WEST,
@@ -46,7 +46,7 @@ from game.tools.art import (
     terrain_tile_id,
 )
 
-GROUND_FAMILY = frozenset({GROUND, DIRT_FILL, STONE_BRICK, GROUND_LEFT, GROUND_RIGHT,
+GROUND_FAMILY = frozenset({GROUND, DIRT_FILL, FIELDSTONE, GROUND_LEFT, GROUND_RIGHT,
                            LONE_BLOCK, *TERRAIN_IDS})  # tile ids the terrain repaints
 PLANK_FAMILY = frozenset(PLANK_MASKS)  # one-way planks: their ends close where a row stops
 TILESET_NAME = "tiles.tsx"
