@@ -122,7 +122,7 @@ def level_time(campaign: Campaign) -> str:
     >>> from game.levels import FIRST_LEVEL, load_level
     >>> campaign = Campaign(FIRST_LEVEL, loader=load_level)
     >>> for _ in range(90):
-    ...     campaign.tick(frozenset())
+    ...     events = campaign.tick(frozenset())
     >>> level_time(campaign)
     '1.50 s'
     """
