@@ -9,14 +9,16 @@ from pathlib import Path
 import pygame
 import pytest
 
+from game.app.assets import Assets
 from game.app.places import PLACES, place_of, recolour
-from game.app.render import floor_line_px
+from game.app.render import WorldRenderer, floor_line_px, pit_spans_px
 from game.levels import LEVELS_DIR, load_level
 from game.levels.classes import SETTINGS
 from game.levels.loader import check_level
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import InputScript
 from game.sim.tilegrid import TileKind
+from game.sim.world import World
 from game.tools import art
 
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
@@ -111,4 +113,39 @@ def test_a_pit_in_view_shows_its_bottom_all_through_the_winning_run(level: Path)
             checked += 1
             assert camera.y + camera.view_h >= map_h, (
                 f"tick {campaign.ticks}: pit at column {seen[0]} in view, its bottom is not")
+    assert checked > 0
+
+
+DARK_LUMA = 60  # the brightest (0.299 r + 0.587 g + 0.114 b) a pit's darkness may be; the
+# meadow's near hills are about 135, its sky over 150
+
+
+@pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
+def test_below_the_floor_line_a_pit_shows_only_darkness(level: Path, assets: Assets) -> None:
+    world = World(load_level(level, images=True))
+    grid = world.level.grid
+    floor_px = floor_line_px(grid)
+    renderer = WorldRenderer(assets)
+    target = pygame.display.get_surface()
+    pits = pit_spans_px(grid, floor_px)
+    assert pits
+    drawn = {(col, row) for layer in (*world.level.layers, *world.level.foreground)
+             for row, line in enumerate(layer.gids) for col, gid in enumerate(line) if gid}
+    checked = 0
+    for left, right in pits:
+        world.camera.x = float(max(0, min(left - 100, grid.cols * grid.tile_w - 320)))
+        world.camera.y = float(grid.rows * grid.tile_h - 180)
+        renderer.draw(target, world, 0)
+        boxes = [sprite.rect for sprite in renderer.sprites.sprites()]
+        for x in range(left, right, 4):
+            for y in range(floor_px + 1, grid.rows * grid.tile_h, 4):
+                cell = (x // grid.tile_w, y // grid.tile_h)
+                if cell in drawn or any(box.collidepoint(x, y) for box in boxes):
+                    continue  # a tile or a sprite, not the background
+                sx, sy = x - math.floor(world.camera.x), y - math.floor(world.camera.y)
+                if 0 <= sx < 320 and 0 <= sy < 180:
+                    colour = target.get_at((sx, sy))
+                    luma = 0.299 * colour.r + 0.587 * colour.g + 0.114 * colour.b
+                    assert luma <= DARK_LUMA, (level.stem, x, y, colour)
+                    checked += 1
     assert checked > 0
