@@ -282,7 +282,8 @@ def test_a_whole_session_title_to_level_to_pause_to_title_to_quit() -> None:
     drive.send(stick(0.9), stick(0.0), button(BUTTON_A))       # Level select
     drive.send(key(pygame.K_RETURN))                            # level 2, lit on opening
     assert drive.menus.screen is Screen.PLAYING
-    quit_to_title = (button(BUTTON_START), hat(0, -1), hat(0, -1), button(BUTTON_A))
+    down_to_quit = (hat(0, -1),) * PAUSE_ITEMS.index(QUIT_TO_TITLE)
+    quit_to_title = (button(BUTTON_START), *down_to_quit, button(BUTTON_A))
     assert drive.send(*quit_to_title).menus.screen is Screen.TITLE
     drive.send(key(pygame.K_DOWN), key(pygame.K_RETURN))        # Quit
     assert drive.commands == [StartLevel(TWO), QuitGame()]

@@ -62,7 +62,7 @@ def test_the_project_has_every_class_and_no_object_types_for_tiled_1_9_to_import
 def test_the_tiled_1_8_project_reads_the_object_types_and_keeps_the_enums() -> None:
     project = json.loads(PROJECT_FILE_1_8.read_text(encoding="utf-8"))
     assert (PROJECT_FILE_1_8.parent / project["objectTypesFile"]) == OBJECT_TYPES_FILE
-    assert [t["name"] for t in project["propertyTypes"]] == ["EnemyKind"]
+    assert [t["name"] for t in project["propertyTypes"]] == ["EnemyKind", "LevelSetting"]
     assert "compatibilityVersion" not in project
 
 

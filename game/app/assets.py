@@ -18,10 +18,11 @@ What it teaches:
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import pygame
 
+from game.levels.classes import SETTINGS
 from game.levels.shipped import ASSETS_DIR
 
 ASSETS = ASSETS_DIR
@@ -49,6 +50,8 @@ class Assets:
     font: pygame.font.Font  # HUD and menu text
     big_font: pygame.font.Font  # titles
     small_font: pygame.font.Font  # the debug overlay
+    # Each place's (still sky, scrolling scenery), by setting name; see game.app.places.
+    places: dict[str, tuple[pygame.Surface, pygame.Surface]] = field(default_factory=dict)
 
 
 def strip(sheet: pygame.Surface, frame_w: int, frame_h: int) -> list[pygame.Surface]:
@@ -110,4 +113,6 @@ def load_assets() -> Assets:
         font=_font(FONT_FILE, FONT_PX),
         big_font=_font(BIG_FONT_FILE, BIG_FONT_PX),
         small_font=_font(FONT_FILE, FONT_PX),
+        places={name: (_image(f"places/{name}-sky.png"), _image(f"places/{name}-scenery.png"))
+                for name in SETTINGS},
     )

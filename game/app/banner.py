@@ -28,10 +28,11 @@ from game.app.screens import (
     COLUMN_GAP_PX,
     LINE_GAP_PX,
     PANEL_PAD_PX,
-    WIN_COLOR,
     dim,
+    draw_heading,
     draw_panel,
     format_seconds,
+    heading_h,
 )
 from game.sim.campaign import LevelResult
 from game.sim.tuning import TICK_S
@@ -119,12 +120,10 @@ class Banner:
                       font.size(title)[0])
         line_h = font.get_linesize() + LINE_GAP_PX
         box = pygame.Rect(0, 0, inner_w + 4 * PANEL_PAD_PX,
-                          big.get_linesize() + (len(lines) + 1) * line_h + 3 * PANEL_PAD_PX)
+                          heading_h(assets) + (len(lines) + 1) * line_h + 3 * PANEL_PAD_PX)
         box.center = target.get_rect().center
         draw_panel(target, box)
-        y = box.top + PANEL_PAD_PX
-        draw_text(target, big, HEADING, (box.centerx, y), WIN_COLOR, anchor="midtop")
-        y += big.get_linesize()
+        y = draw_heading(target, assets, HEADING, (box.centerx, box.top + PANEL_PAD_PX)).bottom
         draw_text(target, font, title, (box.centerx, y), DIM_TEXT, anchor="midtop")
         y += line_h + PANEL_PAD_PX
         blink_on = int(self.shown_s * NEW_BEST_BLINK_HZ * 2) % 2 == 0

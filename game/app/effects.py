@@ -15,7 +15,8 @@ The shake can be turned off (``"screen_shake": false`` in ``settings.json``).
 
 What it teaches:
   * **Juice is feedback for an event.** Each effect answers one thing that happened: a
-    jump leaves dust and stretches the hero upwards; a landing squashes him flat and puffs
+    jump leaves dust and stretches the hero upwards; a landing squashes him a little (two
+    pixels lower and wider: still a hero on his feet, not one knocked flat) and puffs
     dust to both sides; a stomp bursts the slime and shakes the screen; a coin pops.
   * **Squash and stretch keep the feet planted.** The picture is scaled, never the hitbox,
     and it is anchored bottom-centre on the box, so the hero squashes *onto* the floor.
@@ -57,7 +58,7 @@ COIN_POP_S = 0.25  # the ring round a taken coin grows for this long
 COIN_POP_RADIUS_PX = (2, 9)  # from, to
 
 STRETCH = (0.8, 1.25)  # width and height scale at the start of a jump
-SQUASH = (1.3, 0.75)  # on a hard landing
+SQUASH = (1.125, 0.875)  # on a hard landing: 2 px lower and wider, a landing, not a fall flat
 SQUASH_S = 0.15  # squash or stretch fades back to the plain picture over this long
 SHAKE_S = 0.2
 SHAKE_PX = 2  # the largest shake offset, at its start

@@ -21,14 +21,15 @@ from game.sim.world import World
 def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = None,
                  renderer: WorldRenderer | None = None, frame: int = 0, fps: float | None = None,
                  update_ms: float = 0.0, world: World | None = None,
-                 debug_lines: Sequence[str] = (),
-                 panel: PanelMode = PanelMode.COMPACT) -> pygame.Surface:
+                 debug_lines: Sequence[str] = (), panel: PanelMode = PanelMode.COMPACT,
+                 timer: bool = True) -> pygame.Surface:
     """Draw the current state of play on the display surface and return it: the campaign's
     world, or ``world`` (a level just finished, still on screen under its banner).
 
     A window passes the same ``renderer`` every frame, so its caches last; without one, a
     renderer is made for this frame alone (a screenshot). ``panel`` is how much of the
-    overlay's panel shows (F5 in the window).
+    overlay's panel shows (F5 in the window). ``timer``: the HUD shows the level's time (the
+    player's setting).
     """
     target = pygame.display.get_surface()
     if renderer is None:
@@ -36,7 +37,7 @@ def render_frame(campaign: Campaign, *, debug: bool, assets: Assets | None = Non
     assets = renderer.assets
     world = world or campaign.world
     renderer.draw(target, world, frame or campaign.ticks)
-    draw_hud(target, campaign, assets, world)
+    draw_hud(target, campaign, assets, world, timer=timer)
     if debug:
         draw_debug(target, world, assets, fps, update_ms, debug_lines, panel)
     return target

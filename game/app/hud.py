@@ -1,4 +1,4 @@
-"""The heads-up display: lives, coins, score and the level's title along the top of the screen.
+"""The heads-up display: lives, coins, the level's title, its time and the score, along the top.
 
 Where it sits: drawn after the world (:meth:`game.app.render.WorldRenderer.draw`) each frame,
 in screen space (the camera does not move it). It reads the
@@ -23,6 +23,7 @@ import pygame
 
 from game.app.assets import Assets
 from game.sim.campaign import Campaign
+from game.sim.tuning import TICK_S
 from game.sim.world import World
 
 Color = tuple[int, int, int] | tuple[int, int, int, int]
@@ -114,11 +115,27 @@ def _draw_hearts(target: pygame.Surface, assets: Assets, lives: int, start_lives
     return x
 
 
+def level_time(campaign: Campaign) -> str:
+    """The time spent in the level in play, as the HUD shows it: the same clock and the same
+    form as the level-end banner's Time (game time, so a pause does not count).
+
+    >>> from game.levels import FIRST_LEVEL, load_level
+    >>> campaign = Campaign(FIRST_LEVEL, loader=load_level)
+    >>> for _ in range(90):
+    ...     events = campaign.tick(frozenset())
+    >>> level_time(campaign)
+    '1.50 s'
+    """
+    return f"{(campaign.ticks - campaign.level_started_tick) * TICK_S:.2f} s"
+
+
 def draw_hud(target: pygame.Surface, campaign: Campaign, assets: Assets,
-             world: World | None = None) -> None:
+             world: World | None = None, *, timer: bool = True) -> dict[str, str]:
     """Draw the top bar: hearts for lives, the coins taken in the level of all it holds, the
-    level's title, and the score (coin values and stomps: not a second coin count). The
-    level is the campaign's, or ``world`` (one just finished, under its banner)."""
+    level's title, the level's time (unless ``timer`` is off) and the score (coin values and
+    stomps: not a second coin count). The level is the campaign's, or ``world`` (one just
+    finished, under its banner). Returns the texts it drew, by name (``coins``, ``title``,
+    ``time``, ``score``), so a test can read the HUD without reading pixels."""
     world = world or campaign.world
     level = world.level
     width = target.get_width()
@@ -136,14 +153,26 @@ def draw_hud(target: pygame.Surface, campaign: Campaign, assets: Assets,
                       f"{len(level.coins) - len(world.coins)}/{len(level.coins)}",
                       (coin_x + coin.get_width() + ICON_GAP_PX, mid_y), GOLD, anchor="midleft")
 
-    score = draw_text(target, assets.font, f"SCORE {campaign.score:0{SCORE_DIGITS}d}",
+    shown = {"coins": f"{len(level.coins) - len(world.coins)}/{len(level.coins)}"}
+    shown["score"] = f"SCORE {campaign.score:0{SCORE_DIGITS}d}"
+    score = draw_text(target, assets.font, shown["score"],
                       (width - HUD_MARGIN_PX, mid_y), anchor="midright")
+    right_edge = score.left
+    if timer:  # under the banner, the finished level's own time, as the banner tallies it
+        finished = world is not campaign.world and campaign.results
+        shown["time"] = (f"{campaign.results[-1].ticks * TICK_S:.2f} s" if finished
+                         else level_time(campaign))
+        clock = draw_text(target, assets.font, shown["time"], (score.left - HUD_GAP_PX, mid_y),
+                          anchor="midright")
+        right_edge = clock.left
 
-    room = score.left - coins.right - 2 * HUD_GAP_PX
+    room = right_edge - coins.right - 2 * HUD_GAP_PX
     title = fit_text(assets.font, level.title, room)
     if title:
         half = assets.font.size(title)[0] // 2 + HUD_GAP_PX
         centre_x = width // 2  # centred on the screen if it fits there, else in the gap
-        if not coins.right + half <= centre_x <= score.left - half:
-            centre_x = (coins.right + score.left) // 2
+        if not coins.right + half <= centre_x <= right_edge - half:
+            centre_x = (coins.right + right_edge) // 2
         draw_text(target, assets.font, title, (centre_x, mid_y), DIM_TEXT, anchor="center")
+        shown["title"] = title
+    return shown

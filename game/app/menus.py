@@ -85,8 +85,8 @@ def key_nav(event: pygame.event.Event) -> Nav | None:
 
 PLAY, LEVEL_SELECT, QUIT = "Play", "Level select", "Quit"
 TITLE_ITEMS = (PLAY, LEVEL_SELECT, QUIT)
-RESUME, RESTART, QUIT_TO_TITLE = "Resume", "Restart level", "Quit to title"
-PAUSE_ITEMS = (RESUME, RESTART, QUIT_TO_TITLE)
+RESUME, RESTART, TIMER, QUIT_TO_TITLE = "Resume", "Restart level", "Timer", "Quit to title"
+PAUSE_ITEMS = (RESUME, RESTART, TIMER, QUIT_TO_TITLE)
 
 
 @dataclass(frozen=True)
@@ -106,7 +106,12 @@ class QuitGame:
     """Close the window."""
 
 
-Command = StartLevel | RestartLevel | QuitGame
+@dataclass(frozen=True)
+class ToggleTimer:
+    """Show the HUD's timer if it is hidden, hide it if it is shown (a setting, saved)."""
+
+
+Command = StartLevel | RestartLevel | QuitGame | ToggleTimer
 
 
 @dataclass(frozen=True)
@@ -263,6 +268,8 @@ def _paused(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
     chosen = PAUSE_ITEMS[menus.pause_item]
     if chosen == RESTART:
         return replace(menus, screen=Screen.PLAYING), RestartLevel()
+    if chosen == TIMER:  # a setting: the menu stays up, showing the new state
+        return menus, ToggleTimer()
     if chosen == QUIT_TO_TITLE:
         return replace(menus, screen=Screen.TITLE), None
     return replace(menus, screen=Screen.PLAYING), None

@@ -6,8 +6,9 @@ Where it sits: after the frame's ticks, before the HUD. A :class:`WorldRenderer`
 
 A frame, in order (:meth:`WorldRenderer.draw`):
 
-1. **Sky**: the level's colour, the still sky with its sun, then the clouds and hills,
-   scrolled by parallax.
+1. **Sky**: the level's place (:mod:`game.app.places`, the map property ``setting``) gives
+   the still sky with its sun, then the scenery, scrolled by parallax and standing on the
+   level's floor line, and below that line the darkness a pit falls into.
 2. **Tile layers behind the sprites**, each from its cache of pre-drawn chunks.
 3. **Sprites**: every sprite's ``update(frame)`` picks its picture, then one
    :class:`CameraGroup` blits each ``image`` at its ``rect`` minus the camera, in the
@@ -39,6 +40,9 @@ What it teaches:
   * **Parallax**: the clouds and hills scroll at a fraction of the camera's speed, so they
     look far away, and repeat horizontally, so they never run out; the sky and its sun,
     further still, do not move at all.
+  * **The background must not lie about the ground.** Scenery that reaches below the floor
+    looks like somewhere to land; so it ends at the level's floor line (:func:`floor_line_px`)
+    and a pit shows only darkness below it.
 """
 
 from __future__ import annotations
@@ -53,6 +57,14 @@ import pygame
 
 from game.app.assets import Assets
 from game.app.effects import Effects
+from game.app.places import (
+    PLACES,
+    SCENERY_FLOOR_ROW,
+    Place,
+    pit_darkness,
+    place_of,
+    recolour,
+)
 from game.sim.camera import Camera
 from game.sim.enemy import Enemy, Squashed
 from game.sim.level import Animation, Level, TileLayer
@@ -60,6 +72,7 @@ from game.sim.pickups import Checkpoint, Coin, Exit
 from game.sim.platforms import Platform
 from game.sim.player import Player
 from game.sim.sprite import ANIMATION_HZ, BoxSprite, Strip
+from game.sim.tilegrid import TileGrid, TileKind
 from game.sim.world import World
 
 SKY_PARALLAX = 0.25  # the sky moves this fraction of a pixel per pixel the camera moves
@@ -147,6 +160,50 @@ def plank(size: tuple[int, int]) -> pygame.Surface:
     for bolt_x in range(PLANK_BOLT_INSET_PX, rect.right - 1, PLANK_BOLT_GAP_PX):
         image.set_at((bolt_x, rect.centery), PLANK_EDGE_COLOR)
     return image
+
+
+def floor_line_px(grid: TileGrid) -> int:
+    """The map row, in px, where the level's floor is: the top of the solid ground that
+    stands on the map's bottom edge, in the most columns (the lower one on a tie). A map
+    whose bottom row holds no solid tile has its floor at its bottom edge.
+
+    >>> grid = TileGrid(cols=4, rows=4, tile_w=16, tile_h=16)
+    >>> floor_line_px(grid)
+    64
+    """
+    tops: dict[int, int] = {}
+    for col in range(grid.cols):
+        row = grid.rows
+        while row > 0 and any(shape.kind is TileKind.SOLID
+                              for shape in grid.shapes_at(col, row - 1)):
+            row -= 1
+        if row < grid.rows:
+            tops[row] = tops.get(row, 0) + 1
+    if not tops:
+        return grid.rows * grid.tile_h
+    row = max(tops, key=lambda top: (tops[top], top))
+    return row * grid.tile_h
+
+
+def pit_spans_px(grid: TileGrid, floor_px: int) -> list[tuple[int, int]]:
+    """The stretches of the map, ``(left, right)`` in px, with no solid tile at the floor
+    line: the pits, where the background shows darkness below that line.
+
+    >>> grid = TileGrid(cols=4, rows=4, tile_w=16, tile_h=16)
+    >>> pit_spans_px(grid, 48)
+    [(0, 64)]
+    """
+    row = min(floor_px // grid.tile_h, grid.rows - 1)
+    spans: list[tuple[int, int]] = []
+    for col in range(grid.cols):
+        if any(shape.kind is TileKind.SOLID for shape in grid.shapes_at(col, row)):
+            continue
+        left = col * grid.tile_w
+        if spans and spans[-1][1] == left:
+            spans[-1] = (spans[-1][0], left + grid.tile_w)
+        else:
+            spans.append((left, left + grid.tile_w))
+    return spans
 
 
 def greyed(image: pygame.Surface) -> pygame.Surface:
@@ -294,10 +351,12 @@ class LayerCache:
                 target.blit(image, (x, y))
 
 
-def layer_caches(level: Level, layers: Iterable[TileLayer]) -> list[LayerCache]:
-    """A cache for each of ``layers`` of ``level``."""
+def layer_caches(level: Level, layers: Iterable[TileLayer],
+                 images: Mapping[int, pygame.Surface] | None = None) -> list[LayerCache]:
+    """A cache for each of ``layers`` of ``level``, drawn with ``images`` (default: the
+    level's own tile images)."""
     grid = level.grid
-    images = level.tile_images
+    images = level.tile_images if images is None else images
     overhang = _overhang_cells(images.values(), grid.tile_w, grid.tile_h)
     return [LayerCache(layer, images, (grid.tile_w, grid.tile_h), overhang, level.animations)
             for layer in layers]
@@ -331,6 +390,10 @@ class WorldRenderer:
         self.sprites = CameraGroup()
         self.back: list[LayerCache] = []
         self.front: list[LayerCache] = []
+        self.place: Place = PLACES["meadow"]
+        self.floor_px = 0  # the level's floor line, in map px
+        self.pits: list[tuple[int, int]] = []  # where the floor line has no ground, in map px
+        self.pit: pygame.Surface | None = None  # the place's pit darkness, made once a level
 
     def draw(self, target: pygame.Surface, world: World, frame: int) -> None:
         """Paint the world view onto ``target`` (the 320x180 logical screen).
@@ -364,8 +427,15 @@ class WorldRenderer:
         """A new world (a level started, restarted or reloaded): fresh group and caches."""
         self.world = world
         self.sprites = CameraGroup()
-        self.back = layer_caches(world.level, world.level.layers)
-        self.front = layer_caches(world.level, world.level.foreground)
+        level = world.level
+        self.place = place_of(level.properties)
+        swap = self.place.ground_swap()  # the place's grass and dirt, once per level
+        images = {gid: recolour(image, swap) for gid, image in level.tile_images.items()}
+        self.back = layer_caches(level, level.layers, images)
+        self.front = layer_caches(level, level.foreground, images)
+        self.floor_px = floor_line_px(level.grid)
+        self.pits = pit_spans_px(level.grid, self.floor_px)
+        self.pit = None
 
     def _cast_new_sprites(self, world: World) -> None:
         """Add the world's sprites the group does not hold yet (all at first, then a squashed
@@ -397,17 +467,34 @@ class WorldRenderer:
         raise TypeError(f"no pictures for a {type(sprite).__name__}")
 
     def _draw_sky(self, target: pygame.Surface, world: World) -> None:
-        """The sky and its one sun stand still (they are far away); the clouds and hills
-        in front of them scroll by parallax and repeat."""
-        sky = self.assets.sky
+        """The place's sky and its one sun stand still (they are far away); its scenery in
+        front scrolls by parallax, repeats, and stands on the floor line; below that line
+        is the pit's darkness. None of it shakes with a stomp."""
+        sky, scenery = self.assets.places.get(self.place.name,
+                                              (self.assets.sky, self.assets.background))
         if not self.sky_covers or sky.get_height() < target.get_height():
             color = parse_tiled_color(world.level.background_color)
             target.fill(color if color is not None else DEFAULT_SKY_COLOR)
         target.blit(sky, (0, 0))
-        scenery = self.assets.background
+        floor_y = self.floor_px - screen_offset(world.camera)[1]  # on screen
         scenery_w = scenery.get_width()
         scroll = math.floor(world.camera.x * SKY_PARALLAX)
         x = -(scroll % scenery_w)
         while x < target.get_width():
-            target.blit(scenery, (x, 0))
+            target.blit(scenery, (x, floor_y - SCENERY_FLOOR_ROW))
             x += scenery_w
+        height, width = target.get_height(), target.get_width()
+        if floor_y >= height or not self.pits:
+            return
+        if self.pit is None or self.pit.get_width() != width:
+            self.pit = pit_darkness(self.place, width)
+        below = floor_y + self.pit.get_height()
+        world_x = screen_offset(world.camera)[0]
+        for left, right in self.pits:  # each pit in view: the dark, clipped to its width
+            span = pygame.Rect(left - world_x, floor_y, right - left, height - floor_y)
+            span = span.clip(target.get_rect())
+            if span.w <= 0:
+                continue
+            target.blit(self.pit, span.topleft, (span.x, 0, span.w, span.h))
+            if below < height:
+                target.fill((0, 0, 0), (span.x, below, span.w, height - below))

@@ -13,6 +13,9 @@ What it teaches:
   * **A menu is data.** :data:`game.app.menus.TITLE_ITEMS` and :data:`game.app.menus.PAUSE_ITEMS`
     are the lists the menu logic and this drawing code both index with ``selected``, and
     one function (:func:`draw_menu`) draws every list of choices the same way.
+  * **One heading style** (:func:`draw_heading`): the title, pause, level-clear, game-over
+    and win screens all name themselves in the big font, gold, outlined, over a short gold
+    rule, with :data:`HEADING_ROOM_PX` of room before what follows.
   * **Draw an icon rather than hope for a glyph.** The game's pixel font has no padlock,
     so :func:`draw_lock` draws one from a rectangle and an arc.
 """
@@ -36,7 +39,7 @@ from game.app.hud import (
     fit_text,
     translucent_rect,
 )
-from game.app.menus import PAUSE_ITEMS, TITLE_ITEMS, LevelEntry, next_to_play
+from game.app.menus import PAUSE_ITEMS, TIMER, TITLE_ITEMS, LevelEntry, next_to_play
 from game.sim.campaign import Campaign, totals
 from game.sim.sprite import ANIMATION_HZ, animation_index
 from game.sim.tuning import TICK_S
@@ -50,14 +53,16 @@ PANEL_BORDER: Color = (255, 214, 90)
 HIGHLIGHT_COLOR: Color = (255, 214, 90, 70)
 HIGHLIGHT_TEXT: Color = (255, 240, 170)
 LOCKED_TEXT: Color = (118, 120, 146)  # a level not yet unlocked, and its padlock
-GAME_OVER_COLOR: Color = (255, 96, 96)
-WIN_COLOR: Color = (140, 255, 140)
 ERROR_COLOR: Color = (255, 150, 150)
 ERROR_PANEL: Color = (40, 0, 0, 220)
 ERROR_MAX_LINES = 5
 RELOAD_FAILED = "Not reloaded: "  # before the loader's sentence when a --watch reload fails
 
 LINE_GAP_PX = 2  # extra space between lines of text
+HEADING_COLOR: Color = (255, 214, 90)  # every screen's heading: the HUD's gold
+HEADING_RULE_GAP_PX = 2  # between a heading's letters and the rule under it
+HEADING_RULE_INSET_PX = 4  # the rule is this much narrower than the heading at each end
+HEADING_ROOM_PX = 6  # between the rule and whatever comes next
 PANEL_PAD_PX = 6  # space between a panel's border and its contents
 PANEL_GAP_PX = 8  # between two panels side by side
 MENU_ROW_PAD_PX = 1  # highlight bar reaches this far above and below its text
@@ -82,7 +87,7 @@ COIN_ROW_COUNT = 5
 COIN_ROW_MARGIN_PX = 8  # above and below the row of coins
 COIN_FPS = 8
 
-LEVEL_SELECT_HEADING_Y_PX = 18  # centre of "Level select"
+LEVEL_SELECT_HEADING_Y_PX = 14  # centre of the letters of "Level select"
 LEVEL_NUMBER_W_PX = 16  # the "1." column of the level select
 BEST_TIME_W_PX = 44  # the best-time column, right-aligned
 BEST_COINS_W_PX = 28  # the coins column, right-aligned
@@ -98,6 +103,23 @@ CONTROLS = (  # action, keyboard, pad (an Xbox-style pad with the default button
     ("Fullscreen", "F11", "F11"),
 )
 CONTROLS_HEADINGS = ("", "Keyboard", "Gamepad")
+
+
+def heading_h(assets: Assets) -> int:
+    """The height :func:`draw_heading` takes, room below included."""
+    return assets.big_font.get_height() + HEADING_RULE_GAP_PX + 1 + HEADING_ROOM_PX
+
+
+def draw_heading(target: pygame.Surface, assets: Assets, text: str,
+                 midtop: tuple[int, int]) -> pygame.Rect:
+    """A screen's heading, the same on every screen: ``text`` in the big font, gold and
+    outlined, with a short gold rule under it. Returns the area it takes, room below
+    included (:func:`heading_h` tall)."""
+    letters = draw_text(target, assets.big_font, text, midtop, HEADING_COLOR, anchor="midtop")
+    rule_y = letters.top + assets.big_font.get_height() + HEADING_RULE_GAP_PX
+    pygame.draw.line(target, HEADING_COLOR, (letters.left + HEADING_RULE_INSET_PX, rule_y),
+                     (letters.right - 1 - HEADING_RULE_INSET_PX, rule_y))
+    return pygame.Rect(letters.left, letters.top, letters.w, heading_h(assets))
 
 
 def dim(target: pygame.Surface) -> None:
@@ -169,9 +191,9 @@ def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int
     seconds = frame / ANIMATION_HZ
     bob = round(TITLE_BOB_PX * math.sin(2 * math.pi * TITLE_BOB_HZ * seconds))
     centre_x = target.get_width() // 2
-    draw_text(target, assets.big_font, GAME_TITLE, (centre_x, TITLE_Y_PX + bob), GOLD,
-              anchor="center")
-    subtitle_top = TITLE_Y_PX + assets.big_font.get_height() // 2 + LINE_GAP_PX
+    heading = draw_heading(target, assets, GAME_TITLE,
+                           (centre_x, TITLE_Y_PX - assets.big_font.get_height() // 2 + bob))
+    subtitle_top = heading.bottom - bob - HEADING_ROOM_PX + 2 * LINE_GAP_PX
     subtitle = draw_text(target, assets.small_font, "a platformer about collisions",
                          (centre_x, subtitle_top), DIM_TEXT, anchor="midtop",
                          antialias=SMALL_TEXT_ANTIALIAS)
@@ -287,12 +309,13 @@ def draw_level_select(target: pygame.Surface, assets: Assets, frame: int,
     Enter will do with it."""
     _draw_sky(target, assets, frame)
     width, height = target.get_size()
-    draw_text(target, assets.big_font, LEVEL_SELECT_TITLE,
-              (width // 2, LEVEL_SELECT_HEADING_Y_PX), GOLD, anchor="center")
+    title_area = draw_heading(target, assets, LEVEL_SELECT_TITLE,
+                              (width // 2, LEVEL_SELECT_HEADING_Y_PX
+                               - assets.big_font.get_height() // 2))
     font, small = assets.font, assets.small_font
     row_h = _menu_row_h(font)
     footer_h = small.get_linesize() + 2 * LINE_GAP_PX
-    top = LEVEL_SELECT_HEADING_Y_PX + assets.big_font.get_height() // 2 + LINE_GAP_PX
+    top = title_area.bottom
     room = height - top - footer_h - 2 * PANEL_PAD_PX - small.get_linesize()
     shown = max(1, min(len(levels), (room + LINE_GAP_PX) // row_h))
     first = min(max(0, selected - shown + 1), max(0, len(levels) - shown))  # keep it in view
@@ -355,25 +378,36 @@ def _draw_level_select_footer(target: pygame.Surface, assets: Assets,
               color, anchor="midtop", antialias=SMALL_TEXT_ANTIALIAS)
 
 
-def draw_pause(target: pygame.Surface, assets: Assets, selected: int) -> None:
+def pause_labels(timer_on: bool) -> list[str]:
+    """The pause menu's rows as shown: the timer's row says whether the timer is on.
+
+    >>> pause_labels(False)
+    ['Resume', 'Restart level', 'Timer: off', 'Quit to title']
+    """
+    return [f"{item}: {'on' if timer_on else 'off'}" if item == TIMER else item
+            for item in PAUSE_ITEMS]
+
+
+def draw_pause(target: pygame.Surface, assets: Assets, selected: int, *,
+               timer_on: bool = True) -> None:
     """Dim the frame and show the pause menu with ``PAUSE_ITEMS[selected]`` highlighted."""
     dim(target)
     font = assets.font
-    menu_w, menu_h = menu_size(font, PAUSE_ITEMS)
-    heading_h = assets.big_font.get_linesize()
-    panel = pygame.Rect(0, 0, menu_w + 2 * PANEL_PAD_PX,
-                        heading_h + menu_h + LINE_GAP_PX + 2 * PANEL_PAD_PX)
+    labels = pause_labels(timer_on)
+    menu_w, menu_h = menu_size(font, labels)
+    head_h = heading_h(assets)
+    panel = pygame.Rect(0, 0, max(menu_w, assets.big_font.size("Paused")[0]) + 4 * PANEL_PAD_PX,
+                        head_h + menu_h + 2 * PANEL_PAD_PX)
     panel.center = target.get_rect().center
     draw_panel(target, panel)
-    draw_text(target, assets.big_font, "Paused", (panel.centerx, panel.top + PANEL_PAD_PX),
-              anchor="midtop")
-    draw_menu(target, font, PAUSE_ITEMS, selected,
-              (panel.left + PANEL_PAD_PX, panel.top + PANEL_PAD_PX + heading_h),
+    draw_heading(target, assets, "Paused", (panel.centerx, panel.top + PANEL_PAD_PX))
+    draw_menu(target, font, labels, selected,
+              (panel.left + PANEL_PAD_PX, panel.top + PANEL_PAD_PX + head_h),
               panel.w - 2 * PANEL_PAD_PX)
 
 
-def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign, heading: str,
-                 color: Color) -> None:
+def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign,
+                 heading: str) -> None:
     dim(target)
     width, height = target.get_size()
     lines = (
@@ -385,16 +419,15 @@ def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign, hea
     )
     font = assets.font
     line_h = font.get_linesize() + LINE_GAP_PX
-    heading_h = assets.big_font.get_linesize()
+    head_h = heading_h(assets)
     text_w = max(font.size(label)[0] + font.size(value)[0] for label, value in lines)
     panel_w = max(text_w + COLUMN_GAP_PX, assets.big_font.size(heading)[0]) + 4 * PANEL_PAD_PX
     panel = pygame.Rect(0, 0, panel_w,
-                        heading_h + len(lines) * line_h + line_h + 3 * PANEL_PAD_PX)
+                        head_h + len(lines) * line_h + line_h + 3 * PANEL_PAD_PX)
     panel.center = (width // 2, height // 2)
     draw_panel(target, panel)
-    draw_text(target, assets.big_font, heading, (panel.centerx, panel.top + PANEL_PAD_PX),
-              color, anchor="midtop")
-    y = panel.top + PANEL_PAD_PX + heading_h
+    draw_heading(target, assets, heading, (panel.centerx, panel.top + PANEL_PAD_PX))
+    y = panel.top + PANEL_PAD_PX + head_h
     for label, value in lines:
         draw_text(target, font, label, (panel.left + 2 * PANEL_PAD_PX, y), DIM_TEXT)
         draw_text(target, font, value, (panel.right - 2 * PANEL_PAD_PX, y), TEXT_COLOR,
@@ -406,7 +439,7 @@ def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign, hea
 
 def draw_game_over(target: pygame.Surface, assets: Assets, campaign: Campaign) -> None:
     """Dim the last frame and show the final score, coins and deaths."""
-    _draw_result(target, assets, campaign, "Game Over", GAME_OVER_COLOR)
+    _draw_result(target, assets, campaign, "Game Over")
 
 
 WIN_HEADINGS = ("Level", "Time", "Coins", "Stomps")
@@ -434,12 +467,10 @@ def draw_win(target: pygame.Surface, assets: Assets, campaign: Campaign) -> None
     footer = f"Score {campaign.score}    Deaths {campaign.deaths}"
     table_w = sum(widths) + 3 * COLUMN_GAP_PX
     box = pygame.Rect(0, 0, max(table_w, big.size("You Win!")[0]) + 4 * PANEL_PAD_PX,
-                      big.get_linesize() + (len(rows) + 2) * line_h + 3 * PANEL_PAD_PX)
+                      heading_h(assets) + (len(rows) + 2) * line_h + 3 * PANEL_PAD_PX)
     box.center = target.get_rect().center
     draw_panel(target, box)
-    draw_text(target, big, "You Win!", (box.centerx, box.top + PANEL_PAD_PX), WIN_COLOR,
-              anchor="midtop")
-    y = box.top + PANEL_PAD_PX + big.get_linesize()
+    y = draw_heading(target, assets, "You Win!", (box.centerx, box.top + PANEL_PAD_PX)).bottom
     left = box.centerx - table_w // 2
     for number, row in enumerate(rows):
         color = GOLD if number in (0, len(rows) - 1) else TEXT_COLOR

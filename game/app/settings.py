@@ -1,4 +1,4 @@
-"""The player's choices: volumes, fullscreen, and which keys and buttons do what.
+"""The player's choices: volumes, fullscreen, the HUD's timer, and which keys and buttons do what.
 
 Where it sits: read once by the app before the window opens, written when the player changes
 something. It lives as ``settings.json`` in the data folder beside the progress, and is read
@@ -113,6 +113,7 @@ class Settings:
     music_volume: float = DEFAULT_MUSIC_VOLUME
     fullscreen: bool = DEFAULT_FULLSCREEN
     screen_shake: bool = True  # a stomp shakes the picture (game.app.effects); false: never
+    hud_timer: bool = True  # the HUD shows the level's time (the pause menu's Timer row)
     keys: dict[str, list[str]] = field(default_factory=_default_keys)  # action -> key names
     buttons: dict[str, list[int]] = field(default_factory=_default_buttons)  # action -> numbers
 
@@ -133,7 +134,7 @@ class Settings:
     def to_json(self) -> dict[str, Any]:
         return {"version": SETTINGS_VERSION, "effects_volume": self.effects_volume,
                 "music_volume": self.music_volume, "fullscreen": self.fullscreen,
-                "screen_shake": self.screen_shake,
+                "screen_shake": self.screen_shake, "hud_timer": self.hud_timer,
                 "keys": self.keys, "buttons": self.buttons}
 
     @classmethod
@@ -151,7 +152,7 @@ class Settings:
                 else:
                     problems.append(f"{name} is {quoted(value)}, not a number from 0 to 1 "
                                     f"(using {getattr(settings, name)})")
-        for name in ("fullscreen", "screen_shake"):
+        for name in ("fullscreen", "screen_shake", "hud_timer"):
             if name not in data:
                 continue
             if isinstance(data[name], bool):

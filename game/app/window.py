@@ -46,6 +46,7 @@ from game.app.menus import (
     RestartLevel,
     Screen,
     StartLevel,
+    ToggleTimer,
     campaign_levels,
     cleared,
     ended,
@@ -242,7 +243,10 @@ class GameWindow:
             self.audio.play("menu")
         if isinstance(command, QuitGame):
             return True
-        if command is not None and (problem := _obey(command, self.run)) is not None:
+        if isinstance(command, ToggleTimer):
+            self.settings.hud_timer = not self.settings.hud_timer
+            self.save_settings()
+        elif command is not None and (problem := _obey(command, self.run)) is not None:
             self.menus, self.notice = before, problem  # stay on the menu and say why
         if self.menus.screen is Screen.PLAYING and before.screen is not Screen.PLAYING:
             self.held_over.begin(self.held())
@@ -293,7 +297,7 @@ class GameWindow:
             run.write_outputs(render_frame(
                 run.campaign, debug=self.debug, renderer=self.renderer, fps=self.clock.get_fps(),
                 update_ms=run.last_update_ms, debug_lines=self.stepping.lines(run.campaign.ticks),
-                panel=self.panel))
+                panel=self.panel, timer=self.settings.hud_timer))
             return EXIT_OK
         if self.banner is not None:
             self.menus = cleared(self.menus)
@@ -356,11 +360,12 @@ class GameWindow:
                          frame=campaign.ticks, fps=self.clock.get_fps(),
                          update_ms=self.run.last_update_ms,
                          world=self.banner.world if self.banner is not None else None,
-                         debug_lines=self.stepping.lines(campaign.ticks), panel=self.panel)
+                         debug_lines=self.stepping.lines(campaign.ticks), panel=self.panel,
+                         timer=self.settings.hud_timer)
         if self.banner is not None:
             self.banner.draw(target, self.assets)
         _draw_screen(target, self.assets, self.menus, self.entries, campaign, self.frame,
-                     self.using_pad)
+                     self.using_pad, self.settings.hud_timer)
         if self.reload_error is not None:
             draw_error_banner(target, self.assets, RELOAD_FAILED + self.reload_error)
         elif self.notice is not None and self.menus.screen is not Screen.PLAYING:
@@ -392,14 +397,14 @@ def _obey(command: Command, run: Run) -> str | None:
 
 def _draw_screen(target: pygame.Surface, assets: Assets, menus: Menus,
                  entries: tuple[LevelEntry, ...], campaign: Campaign, frame: int,
-                 using_pad: bool) -> None:
+                 using_pad: bool, timer_on: bool) -> None:
     """The screen that is up: a menu in place of the world, or over it."""
     if menus.screen is Screen.TITLE:
         draw_title(target, assets, frame, menus.title_item, entries, pad=using_pad)
     elif menus.screen is Screen.LEVEL_SELECT:
         draw_level_select(target, assets, frame, entries, menus.level_item)
     elif menus.screen is Screen.PAUSED:
-        draw_pause(target, assets, menus.pause_item)
+        draw_pause(target, assets, menus.pause_item, timer_on=timer_on)
     elif menus.screen is Screen.ENDED:
         if campaign.outcome is Outcome.WON:
             draw_win(target, assets, campaign)

@@ -36,6 +36,9 @@ Plain = int | float | str | bool
 
 MAX_SPEED_PX_S = 1_000_000.0  # also px/s² for gravity: past this a tick is a teleport
 MAX_COIN_VALUE = 1_000_000
+# The places a level can be set in (the map property ``setting``); game.app.places draws them.
+SETTINGS = ("meadow", "cliffs", "forest", "caves", "dusk", "summit")
+DEFAULT_SETTING = SETTINGS[0]
 WHAT_TYPE = {"int": "a whole number", "float": "a number", "string": "text",
              "bool": "true or false", "file": "a file"}
 
@@ -157,6 +160,9 @@ def classes_for(tuning: Tuning) -> tuple[TiledClass, ...]:
                    "to see them listed).",
                    (Member("title", "string", "", "shown when the level starts"),
                     Member("next_level", "file", "", "the map that follows this one"),
+                    Member("setting", "string", DEFAULT_SETTING,
+                           "where the level is set: its sky, scenery and ground",
+                           choices=SETTINGS),
                     speed("gravity", tuning.gravity_px_s2, "downward pull in px/s²"),
                     speed("max_fall_speed", tuning.max_fall_speed_px_s,
                           "fastest fall in px/s"),

@@ -28,7 +28,7 @@ What it teaches: generated files that are committed must be checked for stalenes
 copy drifts from its source.
 
 >>> [m["name"] for m in property_types()[-1]["members"]][:3]
-['title', 'next_level', 'gravity']
+['title', 'next_level', 'setting']
 """
 
 from __future__ import annotations

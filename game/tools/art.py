@@ -11,9 +11,16 @@ Run from the repository root::
 
 This (re)writes, in ``assets/`` next to the ``game`` package:
 
-* ``tiles.png`` and ``tiles.tsx``: the 16x16 tileset and its Tiled tileset file
+* ``tiles.png`` and ``tiles.tsx``: the 16x16 tileset and its Tiled tileset file, with the
+  terrain sets that let Tiled paint ground and planks with their edges
 * ``player.png``, ``enemy.png``, ``coin.png``: horizontal sprite-sheet strips
-* ``exit.png``, ``heart.png``, ``background.png``: single images
+* ``exit.png``, ``heart.png``: single images
+* ``sky.png``, ``background.png`` and ``places/NAME-sky.png``, ``places/NAME-scenery.png``:
+  each place's still sky and scrolling scenery (the meadow's twice: the title screen's)
+
+The art direction every picture follows is written in ``assets/README.md``: one palette,
+light from the top left, an outline where what is in play meets the air, crimson only for
+what hurts, and a background without outlines that never reaches below the floor line.
 
 No display is needed: everything is drawn on off-screen ``SRCALPHA`` surfaces.
 The output is deterministic (noise comes from fixed-seed generators).
@@ -24,9 +31,23 @@ from __future__ import annotations
 import math
 import random
 from collections.abc import Callable, Mapping, Sequence
+from functools import partial
 
 import pygame
 
+from game.app.places import (
+    DIRT,
+    DIRT_DARK,
+    DIRT_LIGHT,
+    GRASS,
+    GRASS_DARK,
+    GRASS_LIGHT,
+    PEBBLE,
+    PEBBLE_SHADE,
+    PLACES,
+    SCENERY_FLOOR_ROW,
+    Place,
+)
 from game.levels.shipped import ASSETS_DIR
 from game.tools.pixel_font import write_fonts
 
@@ -42,7 +63,7 @@ Painter = Callable[[pygame.Surface], None]
 
 TILE = 16
 TILESET_COLUMNS = 8
-TILESET_ROWS = 4
+TILESET_ROWS = 10  # 4 rows of single tiles, then 6 of terrain
 TILE_COUNT = TILESET_COLUMNS * TILESET_ROWS
 
 FRAME = 16  # player and enemy frames are FRAME x FRAME
@@ -55,7 +76,7 @@ EXIT_WIDTH, EXIT_HEIGHT = 16, 32
 BACKGROUND_WIDTH, BACKGROUND_HEIGHT = 320, 180
 
 PLANK_HEIGHT = 5  # one-way platform: only the top rows of its tile are drawn
-SPIKE_TOP = 8  # spikes occupy rows SPIKE_TOP..TILE of their tile
+SPIKE_TOP = 8  # spikes occupy rows SPIKE_TOP..TILE of their tile (their collision box)
 SPIKE_HITBOX = (1, 8, 14, 8)  # x, y, width, height inside the spike tile
 
 SEED = 20240611  # fixed seed: the art is identical on every run
@@ -67,15 +88,7 @@ SEED = 20240611  # fixed seed: the art is identical on every run
 OUTLINE: RGB = (38, 30, 56)
 WHITE: RGB = (255, 255, 255)
 
-GRASS_LIGHT: RGB = (164, 230, 92)
-GRASS: RGB = (96, 190, 64)
-GRASS_DARK: RGB = (46, 130, 60)
-
-DIRT_LIGHT: RGB = (196, 136, 84)
-DIRT: RGB = (158, 100, 62)
-DIRT_DARK: RGB = (114, 68, 48)
-PEBBLE: RGB = (226, 196, 156)
-PEBBLE_SHADE: RGB = (184, 148, 112)
+# The grass and dirt colours come from game.app.places: each place swaps them for its own.
 BACK_DIRT_LIGHT: RGB = (104, 72, 70)
 BACK_DIRT: RGB = (82, 56, 60)
 BACK_DIRT_DARK: RGB = (62, 42, 52)
@@ -83,11 +96,9 @@ BACK_DIRT_DARK: RGB = (62, 42, 52)
 STONE_LIGHT: RGB = (190, 196, 214)
 STONE: RGB = (140, 146, 172)
 STONE_DARK: RGB = (96, 98, 130)
-MORTAR: RGB = (70, 66, 96)
 BACK_STONE_LIGHT: RGB = (104, 100, 136)
 BACK_STONE: RGB = (84, 80, 114)
 BACK_STONE_DARK: RGB = (66, 62, 94)
-BACK_MORTAR: RGB = (48, 42, 70)
 
 WOOD_LIGHT: RGB = (226, 172, 104)
 WOOD: RGB = (182, 122, 70)
@@ -104,6 +115,9 @@ GOLD_DARK: RGB = (200, 124, 28)
 RED_LIGHT: RGB = (255, 120, 120)
 RED: RGB = (226, 58, 70)
 RED_DARK: RGB = (156, 36, 56)
+HAZARD_LIGHT: RGB = (255, 176, 196)  # what hurts: a hot crimson no safe tile uses
+HAZARD: RGB = (246, 44, 96)
+HAZARD_DARK: RGB = (176, 18, 70)
 PINK: RGB = (255, 178, 190)
 BLUE_LIGHT: RGB = (120, 176, 255)
 BLUE: RGB = (60, 116, 226)
@@ -121,16 +135,7 @@ FROG_DARK: RGB = (184, 80, 40)
 CREAM: RGB = (255, 236, 196)
 
 SKY_HIGH: RGB = (92, 150, 250)
-SKY_MID: RGB = (124, 180, 252)
-SKY_LOW: RGB = (162, 208, 255)
-SKY_HORIZON: RGB = (206, 234, 255)
-HILL_FAR_LIGHT: RGB = (170, 216, 214)
-HILL_FAR: RGB = (140, 196, 200)
-HILL_NEAR_LIGHT: RGB = (124, 200, 124)
-HILL_NEAR: RGB = (84, 168, 108)
-HILL_NEAR_DARK: RGB = (62, 140, 98)
 CLOUD_SHADE: RGB = (214, 230, 250)
-SUN: RGB = (255, 244, 170)
 
 # --------------------------------------------------------------------------
 # Tile ids (row-major in tiles.png) and their Tiled classes
@@ -138,12 +143,12 @@ SUN: RGB = (255, 244, 170)
 
 GROUND = 0
 DIRT_FILL = 1
-STONE_BRICK = 2
+FIELDSTONE = 2
 GROUND_LEFT = 3
 GROUND_RIGHT = 4
 ONE_WAY = 5
 SPIKES = 6
-METAL_CRATE = 7
+LONE_BLOCK = 7
 BUSH = 8
 FLOWER = 9
 CLOUD_LEFT = 10
@@ -158,16 +163,22 @@ FENCE = 18
 BLUE_FLOWER = 19
 PEBBLES = 20
 TALL_GRASS = 21
+PLANK_LEFT = 22
+PLANK_RIGHT = 23
+PLANK_LONE = 24
 
 TILE_CLASSES: dict[int, str] = {
     GROUND: "Solid",
     DIRT_FILL: "Solid",
-    STONE_BRICK: "Solid",
+    FIELDSTONE: "Solid",
     GROUND_LEFT: "Solid",
     GROUND_RIGHT: "Solid",
     ONE_WAY: "OneWay",
+    PLANK_LEFT: "OneWay",
+    PLANK_RIGHT: "OneWay",
+    PLANK_LONE: "OneWay",
     SPIKES: "Hazard",
-    METAL_CRATE: "Solid",
+    LONE_BLOCK: "Solid",
 }
 TILE_HITBOXES: dict[int, tuple[int, int, int, int]] = {SPIKES: SPIKE_HITBOX}
 
@@ -301,89 +312,182 @@ GRASS_DEPTH = 5  # dirt starts at this row; the grass cap is painted over it
 
 
 def draw_grass_cap(tile: pygame.Surface) -> None:
-    """Paint the grass cap (outline, highlight, blades) over a dirt tile."""
+    """Paint the grass cap (outline, highlight, blades) over the top rows of a tile."""
+    tile.fill((0, 0, 0, 0), (0, 0, TILE, GRASS_DEPTH))
     paint(tile, GRASS_CAP, GRASS_COLORS)
 
 
-def draw_ground(tile: pygame.Surface) -> None:
-    """Tile 0: grass-topped ground."""
-    draw_dirt(tile, GRASS_DEPTH, SEED)
-    draw_grass_cap(tile)
+# The terrain: one tile for every way a ground cell can meet the air around it ("blob"
+# tiles). A cell's neighbours are eight bits; a corner counts only when both edges beside it
+# are ground too, which leaves 47 looks. Bit order follows Tiled's Wang ids.
+NORTH, NORTH_EAST, EAST, SOUTH_EAST, SOUTH, SOUTH_WEST, WEST, NORTH_WEST = (
+    1 << bit for bit in range(8))
+EDGES = (NORTH, EAST, SOUTH, WEST)
+CORNERS = ((NORTH_EAST, NORTH, EAST), (SOUTH_EAST, SOUTH, EAST), (SOUTH_WEST, SOUTH, WEST),
+           (NORTH_WEST, NORTH, WEST))  # each corner with the two edges beside it
+WANG_ORDER = (NORTH, NORTH_EAST, EAST, SOUTH_EAST, SOUTH, SOUTH_WEST, WEST, NORTH_WEST)
 
 
-def draw_dirt_fill(tile: pygame.Surface) -> None:
-    """Tile 1: plain dirt with pebbles (goes under ground tiles)."""
-    draw_dirt(tile, 0, SEED + 1)
+def blob_mask(neighbours: int) -> int:
+    """``neighbours`` (a bit per solid neighbour) with each corner kept only where both edges
+    beside it are solid: the 47 masks that look different.
+
+    >>> corner = NORTH | EAST | NORTH_EAST
+    >>> blob_mask(NORTH_EAST) == 0, blob_mask(corner) == corner
+    (True, True)
+    """
+    mask = neighbours & (NORTH | EAST | SOUTH | WEST)
+    for corner, edge_a, edge_b in CORNERS:
+        if neighbours & corner and mask & edge_a and mask & edge_b:
+            mask |= corner
+    return mask
 
 
-# Left end of a grass platform: rounded corner, grass running down the side,
-# and an outline along the left edge of the dirt.
-GROUND_LEFT_CAP = (
-    "..oo..oo..oo..oo",
-    ".olllo.llo.llo.l",
-    "olllllllllllllll",
-    "olglggllggllggll",
-    "ogDggggggggggggg",
-    "ogDggDggDggDgggD",
-    "ogD.D..D.DD.D..D",
-    "oD..............",
-    "oD..............",
-    "o...............",
-    "o...............",
-    "o...............",
-    "o...............",
-    "o...............",
-    "o...............",
-    "o...............",
+BLOB_MASKS = tuple(sorted({blob_mask(bits) for bits in range(256)}))  # 47, 0 first
+TERRAIN_FIRST = 32  # the terrain tiles start at the first tile of row 4
+TERRAIN_COLUMNS = TILESET_COLUMNS
+
+
+def terrain_tile_id(mask: int) -> int:
+    """The tile that draws a ground cell with these solid neighbours (any 8-bit mask): the
+    lone block for none, else one of the terrain tiles from :data:`TERRAIN_FIRST`."""
+    mask = blob_mask(mask)
+    if mask == 0:
+        return LONE_BLOCK
+    return TERRAIN_FIRST + BLOB_MASKS.index(mask) - 1
+
+
+TERRAIN_IDS = {terrain_tile_id(mask): mask for mask in BLOB_MASKS}
+TERRAIN_LAST = max(TERRAIN_IDS)
+TILE_CLASSES.update({tile_id: "Solid" for tile_id in TERRAIN_IDS})
+TERRAIN_NAME = "Ground"  # the Wang set and its one colour, as Tiled's Terrain Sets list them
+TERRAIN_COLOR = "#8c6d46"
+PLANKS_NAME = "Planks"
+PLANKS_COLOR = "#c8a165"
+PLANK_MASKS = {ONE_WAY: EAST | WEST, PLANK_LEFT: EAST, PLANK_RIGHT: WEST, PLANK_LONE: 0}
+
+
+def plank_tile_id(mask: int) -> int:
+    """The plank tile for a one-way cell with planks to its ``EAST`` and/or ``WEST``."""
+    mask &= EAST | WEST
+    return next(tile_id for tile_id, tile_mask in PLANK_MASKS.items() if tile_mask == mask)
+GRASS_SIDE = (  # where grass meets the open side of a top corner: it hangs over the edge
+    "..oo",
+    ".oll",
+    "olll",
+    "olgl",
+    "ogDg",
+    "ogDg",
+    "ogD.",
+    "oD..",
+    "oD..",
+)
+INNER_LIP = (  # an inside corner under grass: the neighbour's grass turns the corner
+    "oo",
+    "lo",
+    "go",
+    "D.",
 )
 
 
+def draw_terrain(tile: pygame.Surface, mask: int) -> None:
+    """A ground cell whose solid neighbours are ``mask``: dirt inside; grass and an outline
+    on top where it meets the air above; an outline with a lit rim (left) or a shaded rim
+    (right, bottom) on every other open side; notches at the inside corners.
+
+    Light comes from the top left, so the left rims are lighter and the right and bottom
+    darker. Every tile uses the same dirt texture, so neighbours join without a seam.
+    """
+    draw_dirt(tile, 0, SEED + 1)
+    clear = (0, 0, 0, 0)
+    if not mask & WEST:
+        tile.fill(OUTLINE, (0, 0, 1, TILE))
+        tile.fill(DIRT_LIGHT, (1, 0, 1, TILE))
+    if not mask & EAST:
+        tile.fill(OUTLINE, (TILE - 1, 0, 1, TILE))
+        tile.fill(DIRT_DARK, (TILE - 2, 0, 1, TILE))
+    if not mask & SOUTH:
+        tile.fill(OUTLINE, (0, TILE - 1, TILE, 1))
+        tile.fill(DIRT_DARK, (1, TILE - 2, TILE - 2, 1))
+        for open_side, x, inner_x in ((WEST, 0, 1), (EAST, TILE - 1, TILE - 2)):
+            if not mask & open_side:  # round the bottom corner
+                tile.set_at((x, TILE - 1), clear)
+                tile.set_at((inner_x, TILE - 2), OUTLINE)
+    if not mask & NORTH:
+        draw_grass_cap(tile)
+        if not mask & WEST:
+            paint(tile, GRASS_SIDE, GRASS_COLORS)
+            tile.set_at((0, 0), clear)
+            tile.set_at((1, 0), clear)
+        if not mask & EAST:
+            paint(tile, [row[::-1] for row in GRASS_SIDE], GRASS_COLORS, TILE - 4)
+            tile.set_at((TILE - 1, 0), clear)
+            tile.set_at((TILE - 2, 0), clear)
+    if mask & NORTH and mask & WEST and not mask & NORTH_WEST:
+        paint(tile, [row[::-1] for row in INNER_LIP], GRASS_COLORS)
+    if mask & NORTH and mask & EAST and not mask & NORTH_EAST:
+        paint(tile, INNER_LIP, GRASS_COLORS, TILE - 2)
+    if mask & SOUTH and mask & WEST and not mask & SOUTH_WEST:
+        tile.set_at((0, TILE - 1), OUTLINE)
+    if mask & SOUTH and mask & EAST and not mask & SOUTH_EAST:
+        tile.set_at((TILE - 1, TILE - 1), OUTLINE)
+
+
+def terrain_painter(mask: int) -> Painter:
+    """A painter for :func:`draw_terrain` with ``mask``."""
+    def draw(tile: pygame.Surface) -> None:
+        draw_terrain(tile, mask)
+    draw.__doc__ = f"Terrain tile for neighbour mask {mask}."
+    return draw
+
+
+def draw_ground(tile: pygame.Surface) -> None:
+    """Tile 0: grass-topped ground with ground left, right and below (a terrain top)."""
+    draw_terrain(tile, WEST | SOUTH_WEST | SOUTH | SOUTH_EAST | EAST)
+
+
+def draw_dirt_fill(tile: pygame.Surface) -> None:
+    """Tile 1: dirt with ground all round (the terrain's inside)."""
+    draw_terrain(tile, 0xFF)
+
+
 def draw_ground_left(tile: pygame.Surface) -> None:
-    """Tile 3: grass-topped ground, left end (top-left corner)."""
-    draw_dirt(tile, GRASS_DEPTH, SEED + 2)
-    paint(tile, GROUND_LEFT_CAP, GRASS_COLORS)
-    tile.set_at((0, 0), (0, 0, 0, 0))
-    tile.set_at((1, 0), (0, 0, 0, 0))
+    """Tile 3: grass-topped ground, left end (the terrain's top-left corner)."""
+    draw_terrain(tile, EAST | SOUTH_EAST | SOUTH)
 
 
 def draw_ground_right(tile: pygame.Surface) -> None:
-    """Tile 4: grass-topped ground, right end (mirror of the left end)."""
-    left = new_surface(TILE, TILE)
-    draw_ground_left(left)
-    tile.blit(pygame.transform.flip(left, True, False), (0, 0))
+    """Tile 4: grass-topped ground, right end (the terrain's top-right corner)."""
+    draw_terrain(tile, WEST | SOUTH_WEST | SOUTH)
 
 
-BRICK_HEIGHT = 4  # one course of bricks, mortar row included
-BRICK_WIDTH = 8  # one brick, mortar column included
+def draw_lone_block(tile: pygame.Surface) -> None:
+    """Tile 7: a lone block of ground, open on every side (the terrain with no neighbour)."""
+    draw_terrain(tile, 0)
 
 
-def draw_bricks(tile: pygame.Surface, shades: tuple[RGB, RGB, RGB, RGB], seed: int) -> None:
-    """Running-bond bricks with mortar lines, bevelled light/dark edges."""
-    light, base, dark, mortar = shades
-    rng = random.Random(seed)
-    tile.fill(mortar)
-    for course in range(TILE // BRICK_HEIGHT):
-        top = course * BRICK_HEIGHT
-        offset = (BRICK_WIDTH // 2) * (course % 2)
-        for left in range(-BRICK_WIDTH, TILE, BRICK_WIDTH):
-            x0 = left + offset
-            face = pygame.Rect(x0, top, BRICK_WIDTH - 1, BRICK_HEIGHT - 1)
-            tile.fill(base, face)
-            tile.fill(light, (x0, top, BRICK_WIDTH - 1, 1))
-            tile.fill(dark, (x0 + BRICK_WIDTH - 2, top + 1, 1, BRICK_HEIGHT - 2))
-            tile.fill(dark, (x0 + 1, top + BRICK_HEIGHT - 2, BRICK_WIDTH - 2, 1))
-    speckle(tile, rng, pygame.Rect(0, 0, TILE, TILE), (dark,), 0.04)
-    # Mortar is drawn last so speckles never land on it.
-    for course in range(TILE // BRICK_HEIGHT):
-        tile.fill(mortar, (0, course * BRICK_HEIGHT + BRICK_HEIGHT - 1, TILE, 1))
-        offset = (BRICK_WIDTH // 2) * (course % 2)
-        for x in range(offset + BRICK_WIDTH - 1, TILE, BRICK_WIDTH):
-            tile.fill(mortar, (x, course * BRICK_HEIGHT, 1, BRICK_HEIGHT))
+FIELDSTONES = ((0, 0, 7, 5), (8, 1, 8, 5), (2, 6, 6, 5), (9, 7, 6, 4), (0, 12, 5, 4),
+               (6, 12, 9, 4))  # x, y, width, height of each stone in a fieldstone wall
 
 
-def draw_stone_brick(tile: pygame.Surface) -> None:
-    """Tile 2: grey stone bricks (solid)."""
-    draw_bricks(tile, (STONE_LIGHT, STONE, STONE_DARK, MORTAR), SEED + 3)
+def draw_fieldstone(tile: pygame.Surface, shades: tuple[RGB, RGB, RGB], seed: int) -> None:
+    """Rounded stones set in dirt, lit from the top left: the dirt's own pebbles, grown."""
+    light, base, dark = shades
+    draw_dirt(tile, 0, seed, (DIRT_LIGHT, DIRT, DIRT_DARK) if base == PEBBLE else
+              (BACK_DIRT_LIGHT, BACK_DIRT, BACK_DIRT_DARK), pebbles=False)
+    for x, y, width, height in FIELDSTONES:
+        stone = pygame.Rect(x, y, width, height)
+        tile.fill(base, stone.inflate(-2, 0))
+        tile.fill(base, stone.inflate(0, -2))
+        tile.fill(light, (stone.left + 1, stone.top, stone.width - 3, 1))
+        tile.fill(light, (stone.left, stone.top + 1, 1, stone.height - 3))
+        tile.fill(dark, (stone.left + 2, stone.bottom - 1, stone.width - 3, 1))
+        tile.fill(dark, (stone.right - 1, stone.top + 2, 1, stone.height - 3))
+
+
+def draw_fieldstone_wall(tile: pygame.Surface) -> None:
+    """Tile 2: a fieldstone wall, pale stones in dirt (solid)."""
+    draw_fieldstone(tile, (WHITE, PEBBLE, PEBBLE_SHADE), SEED + 3)
 
 
 PLANK = (
@@ -400,8 +504,19 @@ PLANK_BOLT = (
 PLANK_BOLT_COLUMNS = (2, 12)
 
 
-def draw_one_way(tile: pygame.Surface) -> None:
-    """Tile 5: bolted wooden plank in the top PLANK_HEIGHT rows (one-way)."""
+PLANK_END = (  # the open end of a row of planks: outlined and rounded, over its left edge
+    ".o",
+    "ol",
+    "ow",
+    "od",
+    ".o",
+)
+
+
+def draw_one_way(tile: pygame.Surface, open_left: bool = False,
+                 open_right: bool = False) -> None:
+    """Tile 5: bolted wooden plank in the top PLANK_HEIGHT rows (one-way), joined to more
+    planks on both sides; ``open_left`` / ``open_right`` end it there with an outline."""
     if len(PLANK) != PLANK_HEIGHT:
         raise ValueError("PLANK must be PLANK_HEIGHT rows tall")
     colors = {"o": OUTLINE, "l": WOOD_LIGHT, "w": WOOD, "d": WOOD_DARK}
@@ -412,53 +527,51 @@ def draw_one_way(tile: pygame.Surface) -> None:
     # Joints between boards, so a row of planks reads as separate boards.
     tile.set_at((0, 2), WOOD_DARK)
     tile.set_at((TILE - 1, 2), WOOD_DARK)
+    clear = (0, 0, 0, 0)
+    if open_left:
+        tile.fill(clear, (0, 0, 2, PLANK_HEIGHT))
+        paint(tile, PLANK_END, colors)
+    if open_right:
+        tile.fill(clear, (TILE - 2, 0, 2, PLANK_HEIGHT))
+        paint(tile, [row[::-1] for row in PLANK_END], colors, TILE - 2)
+
+
+def draw_plank_left(tile: pygame.Surface) -> None:
+    """Tile 22: the left end of a row of planks (one-way)."""
+    draw_one_way(tile, open_left=True)
+
+
+def draw_plank_right(tile: pygame.Surface) -> None:
+    """Tile 23: the right end of a row of planks (one-way)."""
+    draw_one_way(tile, open_right=True)
+
+
+def draw_plank_lone(tile: pygame.Surface) -> None:
+    """Tile 24: one plank on its own, ended on both sides (one-way)."""
+    draw_one_way(tile, open_left=True, open_right=True)
 
 
 SPIKE = (
-    "...o...",
-    "..olo..",
-    "..olo..",
-    ".olmdo.",
-    ".olmdo.",
-    "olmmddo",
+    "...ww...",
+    "...wl...",
+    "..wllr..",
+    "..llrR..",
+    ".llrrRR.",
+    ".lrrrRR.",
+    "lrrrrrRR",
 )
-SPIKE_PITCH = 4  # 4 spikes across a tile
-SPIKE_BASE = ("dddddddddddddddd", "oooooooooooooooo")
+SPIKE_PITCH = 8  # 2 big spikes across a tile: fewer, bolder teeth read at a glance
+SPIKE_BASE = ("rrrrrrrrrrrrrrrr", "RRRRRRRRRRRRRRRR")
+SPIKE_COLORS = {"o": OUTLINE, "w": WHITE, "l": HAZARD_LIGHT, "r": HAZARD, "R": HAZARD_DARK,
+                "k": OUTLINE}
 
 
 def draw_spikes(tile: pygame.Surface) -> None:
-    """Tile 6: four silver spikes on a metal strip in the lower half."""
-    colors = {"o": OUTLINE, "l": METAL_LIGHT, "m": METAL, "d": METAL_DARK}
+    """Tile 6: two big red spikes with white-hot tips on a crimson strip in the lower half. Red
+    is kept for what hurts: no safe tile and no place's ground is drawn in it."""
     for index in range(TILE // SPIKE_PITCH):
-        paint(tile, SPIKE, colors, index * SPIKE_PITCH - 1, SPIKE_TOP)
-    paint(tile, SPIKE_BASE, colors, 0, TILE - len(SPIKE_BASE))
-
-
-CRATE_PANEL = pygame.Rect(3, 3, 10, 10)  # recessed centre of the crate
-CRATE_RIVETS = ((2, 2), (13, 2), (2, 13), (13, 13))
-
-
-def draw_metal_crate(tile: pygame.Surface) -> None:
-    """Tile 7: riveted steel crate with a diagonal brace (solid)."""
-    tile.fill(OUTLINE)
-    face = pygame.Rect(1, 1, TILE - 2, TILE - 2)
-    tile.fill(METAL, face)
-    tile.fill(METAL_LIGHT, (face.left, face.top, face.width, 1))
-    tile.fill(METAL_LIGHT, (face.left, face.top, 1, face.height))
-    tile.fill(METAL_DARK, (face.left, face.bottom - 1, face.width, 1))
-    tile.fill(METAL_DARK, (face.right - 1, face.top + 1, 1, face.height - 1))
-    panel = CRATE_PANEL
-    tile.fill(METAL_DARK, (panel.left, panel.top, panel.width, 1))
-    tile.fill(METAL_DARK, (panel.left, panel.top, 1, panel.height))
-    tile.fill(METAL_LIGHT, (panel.left + 1, panel.bottom - 1, panel.width - 1, 1))
-    tile.fill(METAL_LIGHT, (panel.right - 1, panel.top + 1, 1, panel.height - 1))
-    for step in range(1, panel.width - 1):  # brace from bottom-left to top-right
-        x, y = panel.left + step, panel.bottom - 1 - step
-        tile.set_at((x, y), METAL_LIGHT)
-        if x + 1 < panel.right - 1:
-            tile.set_at((x + 1, y), METAL_DARK)
-    for x, y in CRATE_RIVETS:
-        tile.set_at((x, y), WHITE)
+        paint(tile, SPIKE, SPIKE_COLORS, index * SPIKE_PITCH, SPIKE_TOP)
+    paint(tile, SPIKE_BASE, SPIKE_COLORS, 0, TILE - len(SPIKE_BASE))
 
 
 BUSH_MAP = (
@@ -604,8 +717,8 @@ def draw_signpost(tile: pygame.Surface) -> None:
 
 
 def draw_back_wall(tile: pygame.Surface) -> None:
-    """Tile 14: darker bricks for background layers (decor)."""
-    draw_bricks(tile, (BACK_STONE_LIGHT, BACK_STONE, BACK_STONE_DARK, BACK_MORTAR), SEED + 4)
+    """Tile 14: a darker fieldstone wall for background layers (decor)."""
+    draw_fieldstone(tile, (BACK_STONE_LIGHT, BACK_STONE, BACK_STONE_DARK), SEED + 4)
 
 
 def draw_back_dirt(tile: pygame.Surface) -> None:
@@ -711,12 +824,12 @@ def draw_tall_grass(tile: pygame.Surface) -> None:
 TILE_PAINTERS: dict[int, Painter] = {
     GROUND: draw_ground,
     DIRT_FILL: draw_dirt_fill,
-    STONE_BRICK: draw_stone_brick,
+    FIELDSTONE: draw_fieldstone_wall,
     GROUND_LEFT: draw_ground_left,
     GROUND_RIGHT: draw_ground_right,
     ONE_WAY: draw_one_way,
     SPIKES: draw_spikes,
-    METAL_CRATE: draw_metal_crate,
+    LONE_BLOCK: draw_lone_block,
     BUSH: draw_bush,
     FLOWER: draw_flower,
     CLOUD_LEFT: draw_cloud_left,
@@ -731,6 +844,11 @@ TILE_PAINTERS: dict[int, Painter] = {
     BLUE_FLOWER: draw_blue_flower,
     PEBBLES: draw_pebbles,
     TALL_GRASS: draw_tall_grass,
+    PLANK_LEFT: draw_plank_left,
+    PLANK_RIGHT: draw_plank_right,
+    PLANK_LONE: draw_plank_lone,
+    **{tile_id: terrain_painter(mask) for tile_id, mask in TERRAIN_IDS.items()
+       if tile_id != LONE_BLOCK},
 }
 
 
@@ -768,8 +886,41 @@ def tileset_tsx() -> str:
             "  </objectgroup>",
             " </tile>",
         ]
+    lines += wangsets_tsx()
     lines.append("</tileset>")
     return "\n".join(lines) + "\n"
+
+
+def wang_id(mask: int) -> str:
+    """Tiled's Wang id of a terrain tile: ground (colour 1) or nothing (0) at its top, top
+    right, right, bottom right, bottom, bottom left, left and top left.
+
+    >>> wang_id(NORTH | EAST | NORTH_EAST)
+    '1,1,1,0,0,0,0,0'
+    """
+    return ",".join("1" if mask & part else "0" for part in WANG_ORDER)
+
+
+def wangsets_tsx() -> list[str]:
+    """The tileset's terrain sets (Tiled 1.8's ``<wangsets>``): ``Ground``, a *mixed* set, so
+    Tiled's Terrain Brush picks each ground cell's tile from its eight neighbours; and
+    ``Planks``, an *edge* set whose ends close where a row of planks stops. Every tile of the
+    first is Solid and of the second OneWay, so painting never changes what collides."""
+    top = terrain_tile_id(WEST | SOUTH_WEST | SOUTH | SOUTH_EAST | EAST)
+    lines = [" <wangsets>",
+             f'  <wangset name="{TERRAIN_NAME}" type="mixed" tile="{top}">',
+             f'   <wangcolor name="{TERRAIN_NAME}" color="{TERRAIN_COLOR}" tile="{top}"'
+             ' probability="1"/>']
+    lines += [f'   <wangtile tileid="{tile_id}" wangid="{wang_id(mask)}"/>'
+              for tile_id, mask in sorted(TERRAIN_IDS.items()) if mask]
+    lines.append("  </wangset>")
+    lines += [f'  <wangset name="{PLANKS_NAME}" type="edge" tile="{ONE_WAY}">',
+              f'   <wangcolor name="{PLANKS_NAME}" color="{PLANKS_COLOR}" tile="{ONE_WAY}"'
+              ' probability="1"/>']
+    lines += [f'   <wangtile tileid="{tile_id}" wangid="{wang_id(mask)}"/>'
+              for tile_id, mask in PLANK_MASKS.items() if mask]
+    lines += ["  </wangset>", " </wangsets>"]
+    return lines
 
 
 # --------------------------------------------------------------------------
@@ -1159,120 +1310,210 @@ def draw_exit() -> pygame.Surface:
 
 
 # --------------------------------------------------------------------------
-# Background
+# Background: each place's still sky and its scrolling scenery
 # --------------------------------------------------------------------------
+#
+# The background follows three rules, so it never reads as something to stand on: it has no
+# outlines (only the things in play do), its colours lean towards the sky's, and its shapes
+# rise from SCENERY_FLOOR, the row the renderer lines up with the level's floor line. Below
+# that line the scenery is only seen behind the ground; in a pit the renderer draws darkness.
 
-BAYER_4X4 = (
-    (0, 8, 2, 10),
-    (12, 4, 14, 6),
-    (3, 11, 1, 9),
-    (15, 7, 13, 5),
-)
-
-
-def bayer_threshold(x: int, y: int) -> float:
-    """Ordered-dither threshold in (0, 1) for pixel (x, y)."""
-    size = len(BAYER_4X4)
-    return (BAYER_4X4[y % size][x % size] + 0.5) / size**2
-
-
-SKY_BANDS = (SKY_HIGH, SKY_MID, SKY_LOW, SKY_HORIZON)
-SKY_BOTTOM = 130  # the sky gradient reaches SKY_HORIZON at this row
+SKY_BOTTOM = 130  # the sky's bands reach the horizon colour at this row
+SCENERY_FLOOR = SCENERY_FLOOR_ROW  # the scenery's shapes end here; the game puts it on the floor
+SKY_HORIZON: RGB = PLACES["meadow"].sky[-1]
+SUN: RGB = PLACES["meadow"].sun or WHITE
+SUN_CENTRE, SUN_RADIUS = (192, 24), 12
+Wave = tuple[int, float, float]  # cycles across the picture, amplitude in px, phase
 
 
-def draw_sky(surface: pygame.Surface) -> None:
-    """Ordered-dithered vertical gradient through the SKY_BANDS colours."""
-    band_height = SKY_BOTTOM / (len(SKY_BANDS) - 1)
+def draw_sky(surface: pygame.Surface, bands: Sequence[RGB]) -> None:
+    """A vertical gradient in flat bands, one per colour, down to SKY_BOTTOM: no dither, so it
+    stays clean however large the window scales it."""
+    band_h = SKY_BOTTOM / len(bands)
     for y in range(BACKGROUND_HEIGHT):
-        position = min(y / band_height, len(SKY_BANDS) - 1.0)
-        band = min(int(position), len(SKY_BANDS) - 2)
-        blend = position - band
-        for x in range(BACKGROUND_WIDTH):
-            color = SKY_BANDS[band + 1] if blend > bayer_threshold(x, y) else SKY_BANDS[band]
-            surface.set_at((x, y), color)
+        surface.fill(bands[min(int(y / band_h), len(bands) - 1)], (0, y, BACKGROUND_WIDTH, 1))
 
 
-def hill_height(x: int, base: float, waves: Sequence[tuple[int, float, float]]) -> int:
-    """Height (row) of a hill line at column x; waves are (cycles, amplitude, phase).
-
-    Every wave completes a whole number of cycles across the background, so the
-    hills wrap around seamlessly when the background is scrolled.
-    """
+def wave_height(x: int, base: float, waves: Sequence[Wave]) -> float:
+    """Height (row) of a wavy line at column x. Every wave completes a whole number of cycles
+    across the picture, so the line wraps round when the scenery is scrolled."""
     angle = 2 * math.pi * x / BACKGROUND_WIDTH
-    return round(base + sum(amp * math.sin(cycles * angle + phase) for cycles, amp, phase in waves))
+    return base + sum(amp * math.sin(cycles * angle + phase) for cycles, amp, phase in waves)
 
 
-def draw_hills(
-    surface: pygame.Surface,
-    base: float,
-    waves: Sequence[tuple[int, float, float]],
-    shades: tuple[RGB, RGB],
-    rim: RGB | None = None,
-) -> None:
-    """Fill a range of hills down to the bottom, with a lighter top edge."""
+def hill_height(x: int, base: float, waves: Sequence[Wave]) -> int:
+    """:func:`wave_height`, rounded to a whole row."""
+    return round(wave_height(x, base, waves))
+
+
+def fill_skyline(surface: pygame.Surface, tops: Sequence[int], shades: tuple[RGB, RGB],
+                 bottom: int = BACKGROUND_HEIGHT) -> None:
+    """Fill each column x from ``tops[x]`` down to ``bottom`` (a lighter 2 px rim on top)."""
     light, body = shades
+    for x, top in enumerate(tops):
+        if top < bottom:
+            surface.fill(body, (x, top, 1, bottom - top))
+            surface.fill(light, (x, top, 1, min(2, bottom - top)))
+
+
+def wavy(base: float, waves: Sequence[Wave]) -> list[int]:
+    return [hill_height(x, base, waves) for x in range(BACKGROUND_WIDTH)]
+
+
+def stepped(base: int, seed: int, steps: int, rise: int) -> list[int]:
+    """A skyline of flat tops and sheer sides (cliffs, mesas): ``steps`` ledges across the
+    picture at heights up to ``rise`` above ``base``, the same at both ends so it wraps."""
+    rng = random.Random(seed)
+    edges = sorted(rng.sample(range(8, BACKGROUND_WIDTH - 8), steps - 1))
+    heights = [base - rng.randrange(rise) for _ in range(steps)]
+    heights[-1] = heights[0]
+    tops = []
     for x in range(BACKGROUND_WIDTH):
-        top = hill_height(x, base, waves)
-        surface.fill(body, (x, top, 1, BACKGROUND_HEIGHT - top))
-        surface.fill(light, (x, top, 1, 2))
-        if rim is not None:
-            surface.set_at((x, top), rim)
+        ledge = sum(1 for edge in edges if x >= edge)
+        tops.append(heights[ledge] + (1 if (x * 7 + ledge) % 11 == 0 else 0))  # crumbly rims
+    return tops
 
 
-def darken_towards_bottom(surface: pygame.Surface, color: RGB, shade: RGB, top: int) -> None:
-    """Dither pixels of ``color`` into ``shade`` more and more below row ``top``."""
-    target = pygame.Color(color)
-    for y in range(top, BACKGROUND_HEIGHT):
-        amount = (y - top) / (BACKGROUND_HEIGHT - top)
-        for x in range(BACKGROUND_WIDTH):
-            if amount > bayer_threshold(x, y) and surface.get_at((x, y)) == target:
-                surface.set_at((x, y), shade)
+def peaked(base: int, peaks: Sequence[tuple[int, int, int]]) -> list[int]:
+    """A skyline of straight-sided peaks: (centre x, height, half width), wrapping round."""
+    tops = [base] * BACKGROUND_WIDTH
+    for centre, height, half in peaks:
+        for dx in range(-half, half + 1):
+            x = (centre + dx) % BACKGROUND_WIDTH
+            tops[x] = min(tops[x], base - height + round(height * abs(dx) / half))
+    return tops
+
+
+def snow_caps(surface: pygame.Surface, tops: Sequence[int], snow: RGB, depth: int,
+              line: int) -> None:
+    """Whiten the parts of a skyline above row ``line``, ``depth`` px deep, with a ragged edge."""
+    for x, top in enumerate(tops):
+        if top < line:
+            surface.fill(snow, (x, top, 1, min(depth + (x * 5) % 3, line - top)))
+
+
+def draw_pines(surface: pygame.Surface, base: int, spacing: int, shade: RGB, seed: int) -> None:
+    """A row of pine-tree silhouettes standing on row ``base``, wrapping round."""
+    rng = random.Random(seed)
+    for left in range(0, BACKGROUND_WIDTH, spacing):
+        height = rng.randrange(18, 34)
+        trunk_x = left + rng.randrange(spacing // 2)
+        for dy in range(height):
+            half = 1 + (dy % 6) // 2 + dy // 5  # three-tier crown, wider as it goes down
+            y = base - height + dy
+            for dx in range(-half, half + 1):
+                surface.set_at(((trunk_x + dx) % BACKGROUND_WIDTH, y), shade)
+        surface.fill(shade, (trunk_x, base, 1, SCENERY_FLOOR - base))
+
+
+def draw_stalactites(surface: pygame.Surface, shade: RGB, light: RGB, seed: int) -> None:
+    """Rock teeth hanging from the top of a cave, with a lit left edge."""
+    rng = random.Random(seed)
+    surface.fill(shade, (0, 0, BACKGROUND_WIDTH, 6))
+    x = 0
+    while x < BACKGROUND_WIDTH - 10:
+        half, length = rng.randrange(3, 9), rng.randrange(10, 44)
+        for dy in range(length):
+            width = max(0, round(half * (1 - dy / length)))
+            surface.fill(shade, (x + half - width, 6 + dy, 2 * width + 1, 1))
+            surface.set_at((x + half - width, 6 + dy), light)
+        x += 2 * half + rng.randrange(2, 14)
 
 
 CLOUD_PUFFS = ((0, 6, 7), (8, 0, 9), (19, 4, 7), (27, 8, 5))  # (x, y, radius)
-NEAR_HILLS_SHADE_TOP = 150  # near hills get darker below this row
-SUN_CENTRE, SUN_RADIUS = (192, 24), 12
 BACKGROUND_CLOUDS = ((24, 18), (132, 38), (214, 12), (290, 48))
 
 
-def draw_background_cloud(surface: pygame.Surface, x: int, y: int) -> None:
+def draw_background_cloud(surface: pygame.Surface, x: int, y: int,
+                          colors: tuple[RGB, RGB] = (WHITE, CLOUD_SHADE)) -> None:
     """One puffy cloud made of circles with a flat, shaded underside."""
+    face, shade = colors
     cloud = new_surface(48, 24)
     for px, py, radius in CLOUD_PUFFS:
-        pygame.draw.circle(cloud, CLOUD_SHADE, (px + 8, py + 8), radius)
+        pygame.draw.circle(cloud, shade, (px + 8, py + 8), radius)
     for px, py, radius in CLOUD_PUFFS:
-        pygame.draw.circle(cloud, WHITE, (px + 8, py + 6), radius - 1)
+        pygame.draw.circle(cloud, face, (px + 8, py + 6), radius - 1)
     cloud.fill((0, 0, 0, 0), (0, 17, 48, 7))
     for dx in (-BACKGROUND_WIDTH, 0):  # draw twice so clouds wrap at the edge
         surface.blit(cloud, (x + dx, y))
 
 
-def draw_sky_picture() -> pygame.Surface:
-    """Return the opaque 320x180 sky: the dithered gradient and the one sun. The game draws
-    it still, behind the scrolling clouds and hills, so the sun never repeats."""
+def mix(a: RGB, b: RGB, amount: float) -> RGB:
+    """``a`` moved ``amount`` (0..1) of the way towards ``b``."""
+    return (round(a[0] + (b[0] - a[0]) * amount), round(a[1] + (b[1] - a[1]) * amount),
+            round(a[2] + (b[2] - a[2]) * amount))
+
+
+def draw_place_sky(place: Place) -> pygame.Surface:
+    """The opaque 320x180 still sky of ``place``: its bands and its one sun (or none)."""
     surface = pygame.Surface((BACKGROUND_WIDTH, BACKGROUND_HEIGHT))
-    draw_sky(surface)
-    pygame.draw.circle(surface, SKY_HORIZON, SUN_CENTRE, SUN_RADIUS + 3)
-    pygame.draw.circle(surface, SUN, SUN_CENTRE, SUN_RADIUS)
+    draw_sky(surface, place.sky)
+    if place.sun is not None:
+        centre = SUN_CENTRE if place.shapes != "dunes" else (120, 96)  # dusk: low and large
+        radius = SUN_RADIUS if place.shapes != "dunes" else 2 * SUN_RADIUS
+        pygame.draw.circle(surface, mix(place.sun, place.sky[-1], 0.6), centre, radius + 3)
+        pygame.draw.circle(surface, place.sun, centre, radius)
     return surface
+
+
+def draw_place_scenery(place: Place) -> pygame.Surface:
+    """The 320x180 scenery of ``place`` over clear sky, ending at SCENERY_FLOOR; it wraps
+    round at the edges, so copies side by side show no seam."""
+    surface = new_surface(BACKGROUND_WIDTH, BACKGROUND_HEIGHT)
+    far, (near_light, near, near_dark) = place.far, place.near
+    clouds = (mix(WHITE, place.sky[-1], 0.2), mix(CLOUD_SHADE, place.sky[2], 0.3))
+    if place.shapes in ("hills", "cliffs", "pines", "peaks", "dunes"):
+        for x, y in BACKGROUND_CLOUDS:
+            draw_background_cloud(surface, x, y, clouds if place.shapes != "hills"
+                                  else (WHITE, CLOUD_SHADE))
+    if place.shapes == "hills":
+        fill_skyline(surface, wavy(112, ((2, 14, 0.3), (5, 6, 1.7), (9, 2, 0.4))), far)
+        fill_skyline(surface, wavy(132, ((3, 10, 2.1), (7, 4, 0.2), (11, 2, 1.1))),
+                     (near_light, near))
+    elif place.shapes == "cliffs":
+        fill_skyline(surface, stepped(100, SEED + 10, 7, 40), far)
+        fill_skyline(surface, stepped(130, SEED + 11, 9, 24), (near_light, near))
+    elif place.shapes == "pines":
+        fill_skyline(surface, wavy(104, ((2, 10, 1.0), (5, 5, 0.2))), far)
+        draw_pines(surface, 126, 14, mix(near, far[1], 0.4), SEED + 12)
+        fill_skyline(surface, wavy(134, ((4, 4, 0.7), (9, 2, 2.0))), (near_light, near))
+        draw_pines(surface, 140, 22, near_dark, SEED + 13)
+    elif place.shapes == "caves":
+        fill_skyline(surface, stepped(96, SEED + 14, 10, 30), far)
+        draw_stalactites(surface, near_dark, near_light, SEED + 15)
+        fill_skyline(surface, peaked(SCENERY_FLOOR, ((40, 36, 14), (150, 26, 10),
+                                                      (250, 44, 16))), (near_light, near))
+    elif place.shapes == "dunes":
+        fill_skyline(surface, wavy(116, ((1, 12, 0.5), (3, 6, 2.2))), far)
+        fill_skyline(surface, wavy(136, ((2, 8, 1.3), (5, 3, 0.1))), (near_light, near))
+    elif place.shapes == "peaks":
+        tops = peaked(SCENERY_FLOOR, ((30, 70, 50), (120, 92, 60), (210, 60, 44),
+                                      (280, 80, 52)))
+        fill_skyline(surface, tops, far)
+        snow_caps(surface, tops, WHITE, 10, SCENERY_FLOOR - 40)
+        fill_skyline(surface, wavy(134, ((3, 6, 0.4), (7, 3, 1.9))), (near_light, near))
+    else:  # pragma: no cover (places.py names only these shapes)
+        raise ValueError(f"no scenery drawn for {place.shapes!r}")
+    return surface
+
+
+def draw_sky_picture() -> pygame.Surface:
+    """The meadow's sky (``sky.png``): the title screen's, and any level's without a setting."""
+    return draw_place_sky(PLACES["meadow"])
 
 
 def draw_background() -> pygame.Surface:
-    """Return the 320x180 parallax scenery over clear sky: clouds and two hill ranges. Every
-    part wraps round at the edges, so copies side by side show no seam."""
-    surface = new_surface(BACKGROUND_WIDTH, BACKGROUND_HEIGHT)
-    for x, y in BACKGROUND_CLOUDS:
-        draw_background_cloud(surface, x, y)
-    draw_hills(surface, 112, ((2, 14, 0.3), (5, 6, 1.7), (9, 2, 0.4)), (HILL_FAR_LIGHT, HILL_FAR))
-    draw_hills(
-        surface,
-        142,
-        ((3, 10, 2.1), (7, 4, 0.2), (11, 2, 1.1)),
-        (HILL_NEAR_LIGHT, HILL_NEAR),
-        rim=HILL_NEAR_DARK,
-    )
-    darken_towards_bottom(surface, HILL_NEAR, HILL_NEAR_DARK, NEAR_HILLS_SHADE_TOP)
-    return surface
+    """The meadow's scenery (``background.png``): clouds and two hill ranges."""
+    return draw_place_scenery(PLACES["meadow"])
+
+
+def place_images() -> dict[str, Callable[[], pygame.Surface]]:
+    """Each place's two pictures, by the name they are written under in ``assets/places/``."""
+    images: dict[str, Callable[[], pygame.Surface]] = {}
+    for name, place in PLACES.items():
+        images[f"places/{name}-sky.png"] = partial(draw_place_sky, place)
+        images[f"places/{name}-scenery.png"] = partial(draw_place_scenery, place)
+    return images
 
 
 # --------------------------------------------------------------------------
@@ -1289,12 +1530,14 @@ IMAGES: dict[str, tuple[Callable[[], pygame.Surface], tuple[int, int]]] = {
     "heart.png": (draw_heart, (HEART_SIZE, HEART_SIZE)),
     "sky.png": (draw_sky_picture, (BACKGROUND_WIDTH, BACKGROUND_HEIGHT)),
     "background.png": (draw_background, (BACKGROUND_WIDTH, BACKGROUND_HEIGHT)),
+    **{name: (draw, (BACKGROUND_WIDTH, BACKGROUND_HEIGHT))
+       for name, draw in place_images().items()},
 }
 
 
 def main() -> None:
     """Draw every asset and write it into ASSETS."""
-    ASSETS.mkdir(parents=True, exist_ok=True)
+    (ASSETS / "places").mkdir(parents=True, exist_ok=True)
     for name, (draw, size) in IMAGES.items():
         surface = draw()
         if surface.get_size() != size:

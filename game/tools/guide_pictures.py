@@ -15,7 +15,10 @@ It (re)writes, in ``assets/guide/``:
   Hop Along at two ticks, where the pennant has waved on and the far clouds have scrolled
   half as far as the ground;
 * ``route-first-steps.png``: ``python -m game.levels solve``'s picture of the route it
-  found through the first level.
+  found through the first level;
+* ``terrain.png``: one shape of ground twice, on the left as one tile stamped everywhere,
+  on the right painted with the terrain tiles by the rule Tiled's Terrain Brush follows
+  (:func:`game.tools.terrain.repaint_rows`), with a spike pit.
 
 Every picture is drawn by game code from game data; nothing is drawn by hand.
 """
@@ -32,6 +35,8 @@ import pygame
 from game.levels import FIRST_LEVEL, LEVELS_DIR
 from game.levels.reach import jump_path
 from game.sim.tuning import Tuning
+from game.tools.art import DIRT_FILL, SPIKES
+from game.tools.terrain import repaint_rows
 
 ROOT = Path(__file__).resolve().parents[2]
 GUIDE = ROOT / "assets" / "guide"
@@ -43,7 +48,15 @@ HITBOX = (217, 83, 79)
 POINT = (58, 123, 213)
 PATH = (255, 255, 255)
 PATH_EDGE = (30, 30, 60)
-GROUND_TILE, BRICK_TILE = 0, 2  # ids in assets/tiles.png
+GROUND_TILE = 0  # ids in assets/tiles.png
+TERRAIN_SHAPE = (  # "#" ground, "^" spikes, for terrain.png
+    "..........",
+    ".....###..",
+    "..#.......",
+    ".###...##.",
+    "####^^####",
+    "##########",
+)
 
 
 def _tile(sheet: pygame.Surface, tile_id: int) -> pygame.Surface:
@@ -68,6 +81,30 @@ def _save(canvas: pygame.Surface, name: str) -> None:
     pygame.image.save(big, str(GUIDE / name))
 
 
+def _paint(canvas: pygame.Surface, sheet: pygame.Surface, shape: tuple[str, ...],
+           left: int = 0, terrain: bool = True) -> None:
+    """Lay ``shape`` (``#`` ground, ``^`` spikes) on ``canvas`` from column ``left``: the
+    ground painted with the terrain tiles, or (``terrain=False``) the dirt tile everywhere."""
+    gids = [[1 + DIRT_FILL if char == "#" else 0 for char in row] for row in shape]
+    if terrain:
+        gids = repaint_rows(gids, 1)
+    for row, line in enumerate(gids):
+        for col, gid in enumerate(line):
+            if shape[row][col] == "^":
+                canvas.blit(_tile(sheet, SPIKES), ((left + col) * TILE, row * TILE))
+            elif gid:
+                canvas.blit(_tile(sheet, gid - 1), ((left + col) * TILE, row * TILE))
+
+
+def terrain(sheet: pygame.Surface) -> None:
+    """The same ground, stamped with one tile (left) and painted as terrain (right)."""
+    width = len(TERRAIN_SHAPE[0])
+    canvas = _canvas(2 * width + 1, len(TERRAIN_SHAPE))
+    _paint(canvas, sheet, TERRAIN_SHAPE, terrain=False)
+    _paint(canvas, sheet, TERRAIN_SHAPE, left=width + 1)
+    _save(canvas, "terrain.png")
+
+
 def player_point(sheet: pygame.Surface) -> None:
     """A point at (40, 18): the 12x14 hitbox hangs below and right of it."""
     tuning = Tuning()
@@ -86,12 +123,11 @@ def reach(sheet: pygame.Surface) -> None:
     cols, rows = 14, 6
     floor_row = rows - 1
     canvas = _canvas(cols, rows)
-    for col in range(cols):
-        canvas.blit(_tile(sheet, GROUND_TILE), (col * TILE, floor_row * TILE))
-    for col in range(8, 10):
-        canvas.blit(_tile(sheet, BRICK_TILE), (col * TILE, (floor_row - 3) * TILE))
-    for col in range(11, 13):
-        canvas.blit(_tile(sheet, BRICK_TILE), (col * TILE, (floor_row - 2) * TILE))
+    shape = ["." * cols for _ in range(rows)]
+    shape[floor_row - 3] = "." * 8 + "##" + "." * (cols - 10)
+    shape[floor_row - 2] = "." * 11 + "##" + "." * (cols - 13)
+    shape[floor_row] = "#" * cols
+    _paint(canvas, sheet, tuple(shape))
     path = jump_path(Tuning())
     start_x, floor_y = path[0].x, path[0].bottom
     # The path of the feet (the middle of the hitbox's bottom edge), from the take-off.
@@ -125,6 +161,7 @@ def main() -> None:
     sheet = pygame.image.load(str(ROOT / "assets" / "tiles.png"))
     player_point(sheet)
     reach(sheet)
+    terrain(sheet)
     screenshots()
     route()
 

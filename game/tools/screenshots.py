@@ -27,7 +27,9 @@ from game.app.assets import load_assets
 from game.app.banner import BANNER_S, Banner
 from game.app.debug_overlay import PanelMode
 from game.app.frame import render_frame
-from game.levels import FIRST_LEVEL, load_level
+from game.app.hud import draw_text
+from game.app.places import place_of
+from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
 from game.sim.campaign import Campaign
 from game.sim.inputs import InputScript
@@ -110,6 +112,40 @@ def full_panel_picture(path: Path) -> None:
     pygame.display.quit()
 
 
+PLACES_TICK = 300  # each level's frame on the contact sheet: 5 s into its winning script
+SHEET_COLUMNS = 2
+SHEET_GAP_PX = 2  # between the frames, in the sheet's dark
+SHEET_BACK = (20, 16, 32)
+
+
+def places_sheet(path: Path) -> None:
+    """The six shipped levels, one frame each, captioned ``N. Title (setting)``."""
+    os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+    pygame.display.init()
+    pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX))
+    assets = load_assets()
+    levels = sorted(LEVELS_DIR.glob("*.tmx"))
+    rows = -(-len(levels) // SHEET_COLUMNS)
+    sheet = pygame.Surface((SHEET_COLUMNS * (VIEW_W_PX + SHEET_GAP_PX) + SHEET_GAP_PX,
+                            rows * (VIEW_H_PX + SHEET_GAP_PX) + SHEET_GAP_PX))
+    sheet.fill(SHEET_BACK)
+    for number, level in enumerate(levels):
+        script = InputScript.load(ROOT / "tests" / "scripts" / f"{level.stem}.txt")
+        campaign = Campaign(level, loader=lambda p: load_level(p, images=True))
+        while campaign.ticks < PLACES_TICK and not campaign.results:
+            campaign.tick(script.held_at(campaign.ticks))
+        frame = render_frame(campaign, debug=False, assets=assets).copy()
+        world = campaign.world.level
+        caption = f"{number + 1}. {world.title} ({place_of(world.properties).name})"
+        draw_text(frame, assets.font, caption, (VIEW_W_PX // 2, VIEW_H_PX - 4),
+                  anchor="midbottom")
+        row, col = divmod(number, SHEET_COLUMNS)
+        sheet.blit(frame, (SHEET_GAP_PX + col * (VIEW_W_PX + SHEET_GAP_PX),
+                           SHEET_GAP_PX + row * (VIEW_H_PX + SHEET_GAP_PX)))
+    pygame.image.save(sheet, str(path))
+    pygame.display.quit()
+
+
 def main() -> None:
     SHOTS.mkdir(parents=True, exist_ok=True)
     for shot in SHOTS_TO_TAKE:
@@ -121,6 +157,8 @@ def main() -> None:
     print(f"debug-full-panel.png: the same script to tick {FULL_PANEL_TICKS}, with the "
           "overlay's full panel (F5)")
     full_panel_picture(SHOTS / "debug-full-panel.png")
+    print(f"places.png: each shipped level at tick {PLACES_TICK} of its winning script")
+    places_sheet(SHOTS / "places.png")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,151 @@
+"""How the levels look: six places that differ, hazards that stand out from everything safe,
+and a camera that shows a pit's bottom whenever it shows the pit."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pygame
+import pytest
+
+from game.app.assets import Assets
+from game.app.places import PLACES, place_of, recolour
+from game.app.render import WorldRenderer, floor_line_px, pit_spans_px
+from game.levels import LEVELS_DIR, load_level
+from game.levels.classes import SETTINGS
+from game.levels.loader import check_level
+from game.sim.campaign import Campaign, Outcome
+from game.sim.inputs import InputScript
+from game.sim.tilegrid import TileKind
+from game.sim.world import World
+from game.tools import art
+
+SCRIPTS = Path(__file__).resolve().parent / "scripts"
+SHIPPED = sorted(LEVELS_DIR.glob("*.tmx"))
+# A hazard's mean colour is at least this far (Euclidean, in 0..255 RGB) from every safe
+# tile's, in every place: about a quarter of the way across the colour cube's side.
+MIN_HAZARD_DISTANCE = 64.0
+
+RGBf = tuple[float, float, float]
+
+
+def mean_colour(tile: pygame.Surface) -> RGBf:
+    """The mean colour of a tile's opaque pixels."""
+    pixels = [tile.get_at((x, y)) for x in range(tile.get_width())
+              for y in range(tile.get_height())]
+    seen = [p for p in pixels if p.a == 255]
+    return (sum(p.r for p in seen) / len(seen), sum(p.g for p in seen) / len(seen),
+            sum(p.b for p in seen) / len(seen))
+
+
+def tile_image(sheet: pygame.Surface, tile_id: int) -> pygame.Surface:
+    row, col = divmod(tile_id, art.TILESET_COLUMNS)
+    return sheet.subsurface((col * art.TILE, row * art.TILE, art.TILE, art.TILE))
+
+
+def hazard_distances() -> dict[str, float]:
+    """For each place, the least distance between a hazard's mean colour and a safe tile's."""
+    sheet = art.draw_tileset()
+    hazards = [i for i, kind in art.TILE_CLASSES.items() if kind == "Hazard"]
+    safe = [i for i, kind in art.TILE_CLASSES.items() if kind in ("Solid", "OneWay")]
+    least = {}
+    for name, place in PLACES.items():
+        swap = place.ground_swap()
+        means = {i: mean_colour(recolour(tile_image(sheet, i).copy(), swap))
+                 for i in hazards + safe}
+        least[name] = min(math.dist(means[h], means[s]) for h in hazards for s in safe)
+    return least
+
+
+def test_hazards_differ_in_colour_from_every_safe_tile_in_every_place() -> None:
+    least = hazard_distances()
+    assert set(least) == set(SETTINGS)
+    for name, distance in least.items():
+        assert distance >= MIN_HAZARD_DISTANCE, f"{name}: spikes {distance:.1f} from a safe tile"
+
+
+def test_the_six_shipped_levels_are_set_in_six_different_places() -> None:
+    places = [place_of(load_level(path).properties).name for path in SHIPPED]
+    assert sorted(places) == sorted(SETTINGS)
+
+
+def test_the_six_places_differ_in_sky_scenery_and_ground() -> None:
+    skies = {pygame.image.tobytes(art.draw_place_sky(p), "RGB") for p in PLACES.values()}
+    scenery = {pygame.image.tobytes(art.draw_place_scenery(p), "RGBA") for p in PLACES.values()}
+    grounds = {p.ground for p in PLACES.values()}
+    for place in PLACES.values():  # a swap done colour by colour must not swap twice
+        swap = place.ground_swap()
+        assert not set(swap.values()) & set(swap), place.name
+    assert len(skies) == len(scenery) == len(grounds) == len(SETTINGS) == 6
+
+
+def test_an_unknown_setting_is_an_error_that_lists_the_settings(tmp_path: Path) -> None:
+    text = (LEVELS_DIR / "01-first-steps.tmx").read_text(encoding="utf-8")
+    bad = tmp_path / "levels" / "bad.tmx"
+    bad.parent.mkdir()
+    (tmp_path / "assets").mkdir()
+    for name in ("tiles.tsx", "tiles.png"):
+        (tmp_path / "assets" / name).write_bytes((LEVELS_DIR.parent / "assets" / name).read_bytes())
+    bad.write_text(text.replace('value="meadow"', 'value="moon"'), encoding="utf-8")
+    findings = check_level(bad)
+    messages = [str(error) for error in findings.errors]
+    assert any("setting" in m and "'moon'" in m and "summit" in m for m in messages), messages
+
+
+@pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
+def test_a_pit_in_view_shows_its_bottom_all_through_the_winning_run(level: Path) -> None:
+    script = InputScript.load(SCRIPTS / f"{level.stem}.txt")
+    campaign = Campaign(level, loader=load_level)
+    grid = campaign.world.level.grid
+    floor = floor_line_px(grid) // grid.tile_h
+    pits = [col for col in range(grid.cols)  # no ground at the floor line: a pit
+            if not any(s.kind is TileKind.SOLID for s in grid.shapes_at(col, floor))]
+    assert pits, "every shipped level has a pit or a spike pit"
+    map_h = grid.rows * grid.tile_h
+    checked = 0
+    while campaign.levels_completed == 0 and campaign.outcome is Outcome.RUNNING:
+        campaign.tick(script.held_at(campaign.ticks))
+        camera = campaign.world.camera
+        left, right = camera.x, camera.x + camera.view_w
+        seen = [col for col in pits if left < (col + 1) * grid.tile_w and col * grid.tile_w < right]
+        if seen:
+            checked += 1
+            assert camera.y + camera.view_h >= map_h, (
+                f"tick {campaign.ticks}: pit at column {seen[0]} in view, its bottom is not")
+    assert checked > 0
+
+
+DARK_LUMA = 60  # the brightest (0.299 r + 0.587 g + 0.114 b) a pit's darkness may be; the
+# meadow's near hills are about 135, its sky over 150
+
+
+@pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
+def test_below_the_floor_line_a_pit_shows_only_darkness(level: Path, assets: Assets) -> None:
+    world = World(load_level(level, images=True))
+    grid = world.level.grid
+    floor_px = floor_line_px(grid)
+    renderer = WorldRenderer(assets)
+    target = pygame.display.get_surface()
+    pits = pit_spans_px(grid, floor_px)
+    assert pits
+    drawn = {(col, row) for layer in (*world.level.layers, *world.level.foreground)
+             for row, line in enumerate(layer.gids) for col, gid in enumerate(line) if gid}
+    checked = 0
+    for left, right in pits:
+        world.camera.x = float(max(0, min(left - 100, grid.cols * grid.tile_w - 320)))
+        world.camera.y = float(grid.rows * grid.tile_h - 180)
+        renderer.draw(target, world, 0)
+        boxes = [sprite.rect for sprite in renderer.sprites.sprites()]
+        for x in range(left, right, 4):
+            for y in range(floor_px + 1, grid.rows * grid.tile_h, 4):
+                cell = (x // grid.tile_w, y // grid.tile_h)
+                if cell in drawn or any(box.collidepoint(x, y) for box in boxes):
+                    continue  # a tile or a sprite, not the background
+                sx, sy = x - math.floor(world.camera.x), y - math.floor(world.camera.y)
+                if 0 <= sx < 320 and 0 <= sy < 180:
+                    colour = target.get_at((sx, sy))
+                    luma = 0.299 * colour.r + 0.587 * colour.g + 0.114 * colour.b
+                    assert luma <= DARK_LUMA, (level.stem, x, y, colour)
+                    checked += 1
+    assert checked > 0
