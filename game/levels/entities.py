@@ -15,6 +15,8 @@ from collections import defaultdict
 from dataclasses import dataclass
 
 from game.collision.aabb import Box
+from game.collision.shapes import TileKind
+from game.collision.tile_grid import TileGrid
 from game.levels.classes import (
     CLASSES_BY_NAME,
     OBJECT_CLASSES,
@@ -29,7 +31,6 @@ from game.levels.objects import MapObject
 from game.levels.spelling import meant
 from game.sim.level import CoinSpec, EnemySpec
 from game.sim.platforms import PlatformSpec, Route
-from game.sim.tilegrid import TileGrid, TileKind
 from game.sim.tuning import Tuning
 
 DEFAULT_COIN_PX = 8
