@@ -27,7 +27,6 @@ import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
-from math import ceil, floor
 
 from game.collision.aabb import Box
 from game.collision.shapes import Entry, TileKind, TileShape
