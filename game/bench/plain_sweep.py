@@ -4,8 +4,9 @@ Where it sits: a yardstick for :mod:`game.bench.peer`. It answers exactly what
 :func:`game.collision.axis_sweep.move_x` and :func:`~game.collision.axis_sweep.move_y`
 answer against solid tiles (the same swept region, the same strict cell range and overlap
 test, the same nearest face, the same map edges), but it takes and returns bare floats and
-reads walls stored as tuples of floats: no ``Box``, ``Move`` or ``Hit`` is built, no method is called per wall.
-The bench checks that it lands every recorded move exactly where the game's code does.
+reads walls stored as tuples of floats: no ``Box``, ``Move`` or ``Hit`` is built, no method
+is called per wall. The bench checks that it lands every recorded move exactly where the
+game's code does.
 
 What it teaches: how much of a move's cost is the arithmetic and how much is the objects
 around it. The targets measure the game's own moves, and its whole tick per body, against
