@@ -27,6 +27,7 @@ import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
+from math import ceil, floor
 
 from game.collision.aabb import Box
 from game.collision.shapes import Entry, TileKind, TileShape
@@ -169,6 +170,7 @@ class PlatformIndex:
     cell_bounds: tuple[float, float, float, float] = (math.inf, math.inf, -math.inf, -math.inf)
 
     def __post_init__(self) -> None:
+        self.tile_w, self.tile_h, self.cols = self.grid.tile_w, self.grid.tile_h, self.grid.cols
         for platform in self.platforms:
             self.file(platform)
 
@@ -244,15 +246,22 @@ class PlatformIndex:
         near: list[Platform] = []
         low_x, low_y, high_x, high_y = self.cell_bounds
         if left < high_x and low_x < right and top < high_y and low_y < bottom:
-            block = self.grid.block_covering(left, top, right, bottom)
-            if block is not None:
-                first_col, last_col, first_row, last_row = block
-                cells, cols = self.cells, self.grid.cols
-                for row in range(first_row, last_row + 1):
-                    for col in range(first_col, last_col + 1):
-                        for platform in cells[row * cols + col] or ():
+            # The cells covered, within the whole cells that hold every platform (so finite
+            # and on the map). Speed, kept: worked out here, not by the grid's
+            # block_covering, whose call took this method from 1.6 to 2 queries' time.
+            tile_w, tile_h, cells, cols = self.tile_w, self.tile_h, self.cells, self.cols
+            first_col = floor((left if left > low_x else low_x) / tile_w)
+            end_col = ceil((right if right < high_x else high_x) / tile_w)
+            first_row = floor((top if top > low_y else low_y) / tile_h)
+            end_row = ceil((bottom if bottom < high_y else high_y) / tile_h)
+            for row in range(first_row, end_row):
+                for col in range(first_col, end_col):
+                    filed = cells[row * cols + col]
+                    if filed is not None:
+                        for platform in filed:
                             if platform not in near and platform is not leaving_out:
                                 near.append(platform)
+            if len(near) > 1:
                 near.sort(key=_number)
         if self.outside:
             near.extend(platform for platform in self.outside if platform is not leaving_out)
@@ -266,10 +275,9 @@ class PlatformIndex:
             return []
         found: list[Entry] = []
         for platform in self.tested_in(left, top, right, bottom, leaving_out):
-            entry = platform.entry
-            if (entry.left < right and left < entry.right and entry.top < bottom
-                    and top < entry.bottom and entry.right > entry.left
-                    and entry.bottom > entry.top):
+            e_left, e_top, e_right, e_bottom, _, _ = entry = platform.entry
+            if (e_left < right and left < e_right and e_top < bottom and top < e_bottom
+                    and e_right > e_left and e_bottom > e_top):
                 found.append(entry)
         return found
 

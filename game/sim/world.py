@@ -400,8 +400,10 @@ class World:
         and those it rides."""
         if not self._platform_list:
             return set()
-        near = self.platform_index.near(body.box for body in bodies)
-        near.update(body.riding for body in bodies if body.riding is not None)
+        near = self.platform_index.near([body.box for body in bodies])
+        for body in bodies:
+            if body.riding is not None:
+                near.add(body.riding)
         return near
 
     def _move_platform(self, platform: Platform, dt: float, bodies: list[Body],
