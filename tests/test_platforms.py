@@ -184,3 +184,26 @@ def test_walking_back_past_an_earlier_flag_keeps_the_later_respawn_point() -> No
     assert counted == [0, 1] and world.checkpoint_reached == 1
     assert world.player.box.x < 96                     # walked back past the first flag
     assert world.spawn.x >= 224
+
+
+def _flags_counted_walking_right(flag: Box) -> list[int]:
+    """Walk right along the floor of the two-flag level, under or through ``flag`` (the
+    only flag); the flags counted on the way."""
+    level = replace(_two_flags_level(slime=False), checkpoints=(flag,))
+    world = World(level, Tuning())
+    counted: list[int] = []
+    for _ in range(120):
+        counted += [e.value for e in world.step(RIGHT) if e.kind is EventKind.CHECKPOINT]
+    assert world.player.box.x > flag.right and world.player.box.top == 34  # walked past it
+    return counted
+
+
+def test_walking_under_a_flag_high_above_the_floor_does_not_count_it() -> None:
+    assert _flags_counted_walking_right(Box(96, -200, 16, 32)) == []
+
+
+def test_a_flag_counts_only_when_the_path_passes_within_its_height() -> None:
+    # The player walks with its top at y = 34: a flag ending exactly there only touches the
+    # path (outside), one ending half a pixel lower overlaps it (just inside).
+    assert _flags_counted_walking_right(Box(96, 2, 16, 32)) == []
+    assert _flags_counted_walking_right(Box(96, 2.5, 16, 32)) == [0]
