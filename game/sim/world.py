@@ -202,7 +202,7 @@ class World:
         """Advance the level by one tick of ``tuning.tick_s`` seconds."""
         events: list[Event] = []
         dt = self.tuning.tick_s
-        look = self._lookups()  # the solids each step asks (logged while the overlay is on)
+        look = self._lookups()  # the source of solids each step asks
         started = time.perf_counter()
 
         if self.squashed:
@@ -240,9 +240,9 @@ class World:
         #    looks one pixel below the feet.
         moves = self.moves = {}
         for body, x_move in zip(bodies, x_moves, strict=True):
-            moves[body] = self._move_y(body, x_move, body.vy * dt, look.y_sweep)
-            body.place(moves[body].y.box)
-            self.probe_ground(body, moves[body].y, solids=look.ground_probe)
+            both = moves[body] = self._move_y(body, x_move, body.vy * dt, look.y_sweep)
+            body.place(both.y.box)
+            self.probe_ground(body, both.y, solids=look.ground_probe)
 
         # 5. React: each body reads what its own moves hit.
         for body, (x_move, y_move) in moves.items():
@@ -311,11 +311,11 @@ class World:
             self.player.respawn(self.spawn, self.tuning.invulnerable_ticks)
             del moves[self.player]
 
-        counted = self.query_log.stats  # all zero unless the lookups are logged
+        counted = self.query_log.stats  # the work of the lookups, when they are written down
         self.stats = TickStats(counted.cells_visited, counted.shapes_tested,
                                time.perf_counter() - started)
         # Measurement only, when asked: how deep does any body sit in a solid after
-        # resolution? (Its lookups are logged apart and left out of the stats above.)
+        # resolution? (Its lookups are left out of the stats above.)
         if self.measure.penetration:
             for body in self.bodies():
                 self.max_penetration_px = max(self.max_penetration_px,
