@@ -247,8 +247,8 @@ class PlatformIndex:
         low_x, low_y, high_x, high_y = self.cell_bounds
         if left < high_x and low_x < right and top < high_y and low_y < bottom:
             # The cells covered, within the whole cells that hold every platform (so finite
-            # and on the map). Speed, kept: worked out here, not by the grid's
-            # block_covering, whose call took this method from 1.6 to 2 queries' time.
+            # and on the map). Speed, kept: worked out here; calling the grid's
+            # block_covering made this about a fifth slower (timeit, a query near a platform).
             tile_w, tile_h, cells, cols = self.tile_w, self.tile_h, self.cells, self.cols
             first_col = floor((left if left > low_x else low_x) / tile_w)
             end_col = ceil((right if right < high_x else high_x) / tile_w)

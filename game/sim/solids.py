@@ -30,8 +30,9 @@ class LevelSolids:
 
     Speed, kept: the map's size, the tiles' query and the block of cells holding every
     platform are looked up once, here (the index is complete when the level starts), not on
-    each of the dozen queries a tick makes: as properties and lookups they made
-    ``World.step`` about a tenth slower on The Summit.
+    each of the dozen queries a tick makes: read through properties and attributes on each
+    query they cost a tenth of it (timeit, over the queries of The Summit's first 1,200
+    ticks).
     """
 
     __slots__ = ("_anywhere", "_bounds", "_tiles_in", "height_px", "platforms", "tiles",
