@@ -6,7 +6,12 @@ import math
 from dataclasses import replace
 from pathlib import Path
 
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from game.collision.aabb import Box
+from game.sim import platforms
 from game.sim.campaign import Campaign
 from game.sim.inputs import NOTHING, Action
 from game.sim.level import Level
@@ -207,3 +212,16 @@ def test_a_flag_counts_only_when_the_path_passes_within_its_height() -> None:
     # path (outside), one ending half a pixel lower overlaps it (just inside).
     assert _flags_counted_walking_right(Box(96, 2, 16, 32)) == []
     assert _flags_counted_walking_right(Box(96, 2.5, 16, 32)) == [0]
+
+
+@given(st.floats(-40, 700), st.floats(-40, 200), st.floats(0.5, 120), st.floats(0.5, 120))
+@settings(max_examples=300, deadline=None)
+def test_a_few_platforms_are_found_by_their_routes_as_the_cells_would_find_them(
+        x: float, y: float, w: float, h: float) -> None:
+    world = World(replace(level_from_ascii(WIDE), platforms=(
+        *gliders(2), PlatformSpec(Route(((40.0, 20.0), (40.0, 100.0))), 16, 8, 30.0))))
+    index = world.platform_index
+    by_routes = index.tested_in(x, y, x + w, y + h)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(platforms, "FEW_PLATFORMS", 0)   # every query walks the cells
+        assert index.tested_in(x, y, x + w, y + h) == by_routes

@@ -35,6 +35,7 @@ from game.collision.tile_grid import TileGrid
 from game.sim.sprite import Anchor, BoxSprite
 
 Point = tuple[float, float]
+FEW_PLATFORMS = 8  # up to this many on the map, a query tests each route's block of cells
 
 
 @dataclass(frozen=True)
@@ -156,6 +157,12 @@ class PlatformIndex:
     platform in the level; :meth:`near` tells the world which platforms a body could meet
     this tick. A platform whose route leaves the map is kept apart and tested by every
     query, since no cell holds the part of it out there.
+
+    With a handful of platforms (up to :data:`FEW_PLATFORMS`) a query tests the block of
+    cells of each route directly, which finds the same platforms as walking the cells it
+    covers. Speed, kept: on The Summit (two platforms) the walk made ``World.step`` about a
+    tenth slower (the bench's paired ratio against the plain-float sweep, 3.9x against 3.5x
+    on a loaded machine).
     """
 
     grid: TileGrid
@@ -171,6 +178,7 @@ class PlatformIndex:
 
     def __post_init__(self) -> None:
         self.tile_w, self.tile_h, self.cols = self.grid.tile_w, self.grid.tile_h, self.grid.cols
+        self.routes: list[tuple[float, float, float, float, Platform]] = []
         for platform in self.platforms:
             self.file(platform)
 
@@ -183,6 +191,9 @@ class PlatformIndex:
         if not (left >= 0 and right <= grid.width_px and top >= 0 and bottom <= grid.height_px):
             self.outside.append(platform)
             return
+        route_left, route_top, route_right, route_bottom = self.cell_block(left, top, right, bottom)
+        if route_right > route_left and route_bottom > route_top:
+            self.routes.append((route_left, route_top, route_right, route_bottom, platform))
         if self.cells:
             low_x, low_y, high_x, high_y = self.bounds
             self.bounds = (min(low_x, left), min(low_y, top), max(high_x, right),
@@ -206,6 +217,13 @@ class PlatformIndex:
                             math.floor(low_y / grid.tile_h) * grid.tile_h,
                             math.ceil(high_x / grid.tile_w) * grid.tile_w,
                             math.ceil(high_y / grid.tile_h) * grid.tile_h)
+
+    def cell_block(self, left: float, top: float, right: float, bottom: float,
+                   ) -> tuple[float, float, float, float]:
+        """The region grown to whole cells: the cells it is filed in, as edges."""
+        tile_w, tile_h = self.tile_w, self.tile_h
+        return (math.floor(left / tile_w) * tile_w, math.floor(top / tile_h) * tile_h,
+                math.ceil(right / tile_w) * tile_w, math.ceil(bottom / tile_h) * tile_h)
 
     def near(self, boxes: Iterable[Box]) -> set[Platform]:
         """The platforms whose route region shares a cell with any of the boxes (and those
@@ -245,7 +263,14 @@ class PlatformIndex:
         in the order of their numbers, then those off the map; ``leaving_out`` is skipped."""
         near: list[Platform] = []
         low_x, low_y, high_x, high_y = self.cell_bounds
-        if left < high_x and low_x < right and top < high_y and low_y < bottom:
+        if not (left < high_x and low_x < right and top < high_y and low_y < bottom):
+            pass  # far from every route on the map
+        elif len(self.routes) <= FEW_PLATFORMS:
+            for route_left, route_top, route_right, route_bottom, platform in self.routes:
+                if (left < route_right and route_left < right and top < route_bottom
+                        and route_top < bottom and platform is not leaving_out):
+                    near.append(platform)
+        else:
             # The cells covered, within the whole cells that hold every platform (so finite
             # and on the map). Speed, kept: worked out here; calling the grid's
             # block_covering made this about a fifth slower (timeit, a query near a platform).
