@@ -233,7 +233,9 @@ class World:
                 platform.advance(dt)
 
         # 3. x pass: move along x and stop flush at the first solid face swept.
-        x_moves = [move_x(look.x_sweep, body.box, body.vx * dt) for body in bodies]
+        x_moves: list[Move] = []
+        for body in bodies:
+            x_moves.append(move_x(look.x_sweep, body.box, body.vx * dt))
 
         # 4. y pass: the same along y from where the x pass stopped (a rise that clips a
         #    ceiling's corner slides past it); the body is placed, once a tick, and the probe
@@ -242,7 +244,7 @@ class World:
         for body, x_move in zip(bodies, x_moves, strict=True):
             both = moves[body] = self._move_y(body, x_move, body.vy * dt, look.y_sweep)
             body.place(both.y.box)
-            self.probe_ground(body, both.y, solids=look.ground_probe)
+            self.probe_ground(body, both.y, look.ground_probe)
 
         # 5. React: each body reads what its own moves hit.
         for body, (x_move, y_move) in moves.items():
@@ -331,7 +333,7 @@ class World:
         self.query_log.clear()
         return self._logged if self.measure.queries else self._plain
 
-    def probe_ground(self, body: Body, y_move: Move | None = None, *,
+    def probe_ground(self, body: Body, y_move: Move | None = None,
                      solids: ShapeSource | None = None) -> None:
         """The one-pixel probe under the feet: what the body stands (or rides) on, if anything.
 
