@@ -1,7 +1,7 @@
 """Tile Hopper: a pygame platformer whose code teaches 2D collision detection.
 
-Start reading at :mod:`game.sim.world` (one tick, top to bottom) and :mod:`game.sim.movement`
-(the swept x and y passes). The README maps every technique to its module.
+Start reading at :mod:`game.collision.axis_sweep` (the swept x and y passes) and
+:mod:`game.sim.world` (one tick, top to bottom). The README maps every technique to its module.
 
 Ctrl-C while a command is still loading its modules (``python -m game``, ``python -m
 game.levels``, ``python -m game.lab``, ``tile-hopper``) ends it with status 130 and one line,

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from game.collision.shapes import TileKind
 from game.levels import LEVELS_DIR
 from game.levels.loader import load_level
-from game.sim.tilegrid import TileKind
 
 EMPTY = "."
 CELL_CHARS = {  # (kind, box relative to its cell) -> the character written

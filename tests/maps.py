@@ -10,8 +10,9 @@ from __future__ import annotations
 from pathlib import Path
 
 from game.collision.aabb import Box
+from game.collision.shapes import TileKind, TileShape
+from game.collision.tile_grid import TileGrid
 from game.sim.level import CoinSpec, EnemySpec, Level
-from game.sim.tilegrid import TileGrid, TileKind, TileShape
 from game.sim.world import Measure
 
 TILE = 16

@@ -53,8 +53,8 @@ from game.app.debug_overlay import (
 from game.app.hud import Color
 from game.app.render import screen_offset
 from game.collision.aabb import Box
+from game.collision.axis_sweep import Move, Side
 from game.sim.camera import Camera
-from game.sim.movement import Move, Side
 from game.sim.world import World
 
 Outline = tuple[Color, pygame.Rect]
@@ -147,7 +147,10 @@ def draw_debug_plainly(target: pygame.Surface, world: World, assets: Assets,
     squares, outlines = _tested(wash, world)
     bars = []
     for body in world.bodies():
-        for move, color in ((body.last_x, SWEEP_X_COLOR), (body.last_y, SWEEP_Y_COLOR)):
+        moves = world.moves.get(body)
+        if moves is None:
+            continue
+        for move, color in ((moves.x, SWEEP_X_COLOR), (moves.y, SWEEP_Y_COLOR)):
             bar = _sweep(wash, move, color, world.camera)
             if bar is not None:
                 bars.append(bar)

@@ -34,10 +34,10 @@ from game.bench.sizes import TINY
 from game.bench.timing import Case, interleaved, percentile
 from game.collision import methods
 from game.collision.aabb import Box
+from game.collision.axis_sweep import move_x, move_y
 from game.collision.broad.brute_force import BruteForce
 from game.collision.broad.spatial_grid import SpatialGrid
 from game.levels import load_level
-from game.sim.movement import move_x, move_y
 
 COMMITTED = Path(__file__).resolve().parent.parent / "assets" / "charts"
 

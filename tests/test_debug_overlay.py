@@ -57,8 +57,8 @@ def test_a_body_falling_10_tiles_per_tick_shows_every_cell_its_sweep_covered(
                   max_fall_speed_px_s=FALL_PX_PER_TICK * 60)
     world = World(level_from_ascii(SHAFT), fast, measure=Measure(queries=True))
     world.step(NOTHING)
-    fall = world.player.last_y
-    assert fall is not None and fall.hit is None
+    fall = world.moves[world.player].y
+    assert fall.hit is None
     assert fall.box.y - fall.start.y == FALL_PX_PER_TICK
     swept = set(world.grid.cells_covering(fall.swept))
     assert len({row for _, row in swept}) >= 10            # a column of at least 10 cells
@@ -85,9 +85,9 @@ def test_a_body_at_rest_shows_only_what_its_sweeps_and_probe_touched(assets: Ass
     # What the player's own lookups could have touched, worked out from its moves alone:
     # no x sweep (it did not move along x), the y sweep that landed it where it stands, and
     # the probe only if that sweep did not already find the floor under the feet.
-    assert player.last_x is not None and player.last_y is not None
-    expected = set(world.grid.cells_covering(player.last_y.swept))
-    hit = player.last_y.hit
+    moves = world.moves[player]
+    expected = set(world.grid.cells_covering(moves.y.swept))
+    hit = moves.y.hit
     if hit is None or hit.face != player.box.bottom:
         probe = Box(player.box.x, player.box.bottom, player.box.w, 1)
         expected |= set(world.grid.cells_covering(probe))

@@ -10,7 +10,8 @@ import pytest
 GAME = Path(__file__).resolve().parent.parent / "game"
 MODULES = sorted(p for p in GAME.rglob("*.py"))
 COLLISION_MODULES = ["collision/aabb", "collision/circles", "collision/sat", "collision/masks",
-                     "collision/composite", "collision/swept", "sim/tilegrid", "sim/movement",
+                     "collision/composite", "collision/swept", "collision/tile_grid",
+                     "collision/axis_sweep", "collision/shapes", "collision/free_place",
                      "collision/broad/spatial_grid", "collision/broad/quadtree",
                      "collision/broad/sort_and_sweep", "collision/broad/brute_force",
                      "collision/response", "collision/contacts", "sim/fixed_step", "sim/camera"]

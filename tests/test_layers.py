@@ -123,6 +123,17 @@ def test_the_import_reader_finds_known_imports() -> None:
     """The import reader itself works: it resolves absolute, relative and `from package import
     module` forms, so the tests above cannot pass by reading nothing."""
     assert "game.sim.world" in GRAPH["game.sim.campaign"]
-    assert "game.collision.aabb" in GRAPH["game.sim.movement"]
+    assert "game.collision.aabb" in GRAPH["game.collision.axis_sweep"]
     assert "game.levels.errors" in GRAPH["game.levels"]
     assert len(MODULES) > 50
+
+
+def test_the_tick_runs_the_collision_path_of_the_reference() -> None:
+    """The swept moves and the tile lookup the world runs are the reference's own: the
+    simulation imports them from ``game.collision`` and defines no moves of its own."""
+    assert {"game.collision.axis_sweep", "game.collision.shapes"} <= GRAPH["game.sim.world"]
+    assert "game.collision.tile_grid" in GRAPH["game.sim.solids"]
+    sim = [p for p in (GAME / "sim").glob("*.py")]
+    defined = {node.name for p in sim for node in ast.walk(ast.parse(p.read_text("utf-8")))
+               if isinstance(node, ast.FunctionDef)}
+    assert not defined & {"move_x", "move_y", "ground_under", "slide_past_ceiling_corner"}

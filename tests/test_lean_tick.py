@@ -17,12 +17,13 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from game.collision.aabb import Box
+from game.collision.axis_sweep import Edges
+from game.collision.shapes import ShapeSource, TileKind
 from game.levels import LEVELS_DIR, load_level
+from game.sim.body import BodyMoves
 from game.sim.enemy import LEDGE_PROBE_PX, Enemy
 from game.sim.inputs import InputScript
-from game.sim.movement import Edges
 from game.sim.pickups import TriggerCells
-from game.sim.tilegrid import TileKind
 from game.sim.world import PLAYER_KEY, ContactKey, Measure, World, crossed
 
 SCRIPTS = Path(__file__).parent / "scripts"
@@ -44,13 +45,13 @@ def _ground_ahead_by_lookup(world: World, enemy: Enemy) -> bool:
     x, y, w, h = enemy.box
     front = x + w if enemy.direction > 0 else x - LEDGE_PROBE_PX
     feet = y + h
-    return any(entry[4] is not TileKind.HAZARD for entry in world.solids.entries_in(
+    return any(entry.kind is not TileKind.HAZARD for entry in world.solids.entries_in(
         front, feet, front + LEDGE_PROBE_PX, feet + LEDGE_PROBE_PX))
 
 
-def _contacts_in_full(world: World) -> set[tuple[ContactKey, ContactKey]]:
-    """The player's contacts by testing every exit, checkpoint, enemy and spike cell."""
-    player = world.player
+def _contacts_in_full(world: World, player: BodyMoves) -> set[tuple[ContactKey, ContactKey]]:
+    """The player's contacts (its path: ``player``) by testing every exit, checkpoint,
+    enemy and spike cell."""
     pairs: set[tuple[ContactKey, ContactKey]] = set()
     for number, goal in enumerate(world.exits):
         if crossed(player, goal):
@@ -61,12 +62,11 @@ def _contacts_in_full(world: World) -> set[tuple[ContactKey, ContactKey]]:
     for number, enemy in world.enemy_by_number.items():
         if enemy.alive() and crossed(player, enemy):
             pairs.add((PLAYER_KEY, ("enemy", number)))
-    for move in (player.last_x, player.last_y):
-        if move is not None:
-            for entry in world.grid.entries_in(*move.path_edges):
-                if entry[4] is TileKind.HAZARD:
-                    pairs.add((PLAYER_KEY, ("hazard", entry[5].row * world.grid.cols
-                                            + entry[5].col)))
+    for move in player:
+        for entry in world.grid.entries_in(*move.path_edges):
+            if entry.kind is TileKind.HAZARD:
+                pairs.add((PLAYER_KEY, ("hazard", entry.shape.row * world.grid.cols
+                                        + entry.shape.col)))
     return pairs
 
 
@@ -77,13 +77,14 @@ def test_the_trigger_and_spike_shortcuts_miss_no_contact(level_path: Path) -> No
     contacts_of_tick = world._player_contacts
     touched = 0
 
-    def checked(reach: Edges, near_trigger: bool) -> set[tuple[ContactKey, ContactKey]]:
+    def checked(path: BodyMoves, reach: Edges, near_trigger: bool, hazards: ShapeSource,
+                ) -> set[tuple[ContactKey, ContactKey]]:
         """Step 7 as the tick makes it, beside the full tests at the same moment."""
         nonlocal touched
-        found = contacts_of_tick(reach, near_trigger)
-        assert found == _contacts_in_full(world)
+        found = contacts_of_tick(path, reach, near_trigger, hazards)
+        assert found == _contacts_in_full(world, path)
         # No coin left in play lies on the path (groupcollide, just before, took them).
-        assert not [coin for coin in world.coins if crossed(world.player, coin)]
+        assert not [coin for coin in world.coins if crossed(path, coin)]
         touched += bool(found)
         return found
 

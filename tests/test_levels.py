@@ -9,12 +9,12 @@ from pathlib import Path
 import pytest
 
 from game.collision.aabb import Box
+from game.collision.shapes import TileKind
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.levels.loader import check_level
 from game.levels.reach import measure_reach
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, InputScript
-from game.sim.tilegrid import TileKind
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
 from tests.maps import MEASURED, write_tmx

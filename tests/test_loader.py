@@ -17,9 +17,9 @@ from pathlib import Path
 import pytest
 
 from game.collision.aabb import Box
+from game.collision.shapes import TileKind
 from game.levels import LEVELS_DIR, LevelError, check_level, load_level
 from game.sim.level import Level
-from game.sim.tilegrid import TileKind
 from game.sim.tuning import Tuning
 from tests.hang_guard import hang_guard
 

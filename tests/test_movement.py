@@ -5,8 +5,9 @@ from __future__ import annotations
 import pytest
 
 from game.collision.aabb import Box
-from game.sim.movement import Side, ground_under, move_x, move_y
-from game.sim.tilegrid import TileGrid, TileKind, TileShape
+from game.collision.axis_sweep import Side, ground_under, move_x, move_y
+from game.collision.shapes import TileKind, TileShape
+from game.collision.tile_grid import CountedGrid, TileGrid
 
 T = 16
 
@@ -145,8 +146,7 @@ def test_the_ground_probe_needs_a_top_exactly_at_the_feet() -> None:
 
 
 def test_a_query_visits_only_the_cells_the_sweep_covers() -> None:
-    grid = grid_with([(c, 10) for c in range(200)])
-    grid.stats.reset()
+    grid = CountedGrid(grid_with([(c, 10) for c in range(200)]))
     move_x(grid, Box(97.0, 10 * T - 14, 12, 14), 3.0)
     assert grid.stats.cells_visited == 1   # x 97..112 ends on a border: column 6 only
     grid.stats.reset()

@@ -12,12 +12,12 @@ import pytest
 from game.app.assets import Assets
 from game.app.places import PLACES, place_of, recolour
 from game.app.render import WorldRenderer, floor_line_px, pit_spans_px
+from game.collision.shapes import TileKind
 from game.levels import LEVELS_DIR, load_level
 from game.levels.classes import SETTINGS
 from game.levels.loader import check_level
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import InputScript
-from game.sim.tilegrid import TileKind
 from game.sim.world import World
 from game.tools import art
 

@@ -6,13 +6,18 @@ import math
 from dataclasses import replace
 from pathlib import Path
 
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
 from game.collision.aabb import Box
+from game.sim import platforms
 from game.sim.campaign import Campaign
 from game.sim.inputs import NOTHING, Action
 from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.tuning import Tuning
-from game.sim.world import EventKind, World
+from game.sim.world import EventKind, Measure, World
 from tests.maps import MEASURED, level_from_ascii
 
 RIGHT = frozenset({Action.RIGHT})
@@ -128,13 +133,15 @@ def gliders(count: int) -> tuple[PlatformSpec, ...]:
 def test_a_hundred_far_platforms_add_no_lookup_work_to_a_tick() -> None:
     work = {}
     for count in (2, 100):
-        world = World(replace(level_from_ascii(WIDE), platforms=gliders(count)))
+        world = World(replace(level_from_ascii(WIDE), platforms=gliders(count)),
+                      measure=Measure(queries=True))   # the lookups' work is counted
         tested = []
         for tick in range(120):
             world.step(RIGHT if tick % 60 < 30 else NOTHING)
             tested.append((world.stats.cells_visited, world.stats.shapes_tested))
         work[count] = tested
     assert work[2] == work[100]
+    assert all(cells > 0 for cells, _ in work[2])
 
 
 def test_a_platform_nobody_is_near_is_where_its_route_puts_it_whenever_it_is_read() -> None:
@@ -160,10 +167,10 @@ def test_a_checkpoint_jumped_over_still_counts_and_a_slime_sends_the_player_back
         ) -> None:
     level = _two_flags_level(slime=True)
     world = World(level, replace(Tuning(), enemy_speed_px_s=0.0))
-    world.player.teleport(Box(60, -200, 12, 14))   # falling from high above, running right
+    world.player.teleport(Box(40, 34, 12, 14))     # on the floor, running right
     counted_at = []
-    for _ in range(300):
-        events = world.step(RIGHT)
+    for tick in range(300):   # a jump held from tick 16 to 35 clears the flag, touching nothing
+        events = world.step(RIGHT | {Action.JUMP} if 16 <= tick < 36 else RIGHT)
         counted_at += [world.player.box for e in events if e.kind is EventKind.CHECKPOINT]
         if any(e.kind is EventKind.HURT for e in events):
             break
@@ -182,3 +189,48 @@ def test_walking_back_past_an_earlier_flag_keeps_the_later_respawn_point() -> No
     assert counted == [0, 1] and world.checkpoint_reached == 1
     assert world.player.box.x < 96                     # walked back past the first flag
     assert world.spawn.x >= 224
+
+
+def _flags_counted_walking_right(flag: Box) -> list[int]:
+    """Walk right along the floor of the two-flag level, under or through ``flag`` (the
+    only flag); the flags counted on the way."""
+    level = replace(_two_flags_level(slime=False), checkpoints=(flag,))
+    world = World(level, Tuning())
+    counted: list[int] = []
+    for _ in range(120):
+        counted += [e.value for e in world.step(RIGHT) if e.kind is EventKind.CHECKPOINT]
+    assert world.player.box.x > flag.right and world.player.box.top == 34  # walked past it
+    return counted
+
+
+def test_walking_under_a_flag_high_above_the_floor_does_not_count_it() -> None:
+    assert _flags_counted_walking_right(Box(96, -200, 16, 32)) == []
+
+
+def test_a_flag_counts_only_when_the_path_passes_within_its_height() -> None:
+    # The player walks with its top at y = 34: a flag ending exactly there only touches the
+    # path (outside), one ending half a pixel lower overlaps it (just inside).
+    assert _flags_counted_walking_right(Box(96, 2, 16, 32)) == []
+    assert _flags_counted_walking_right(Box(96, 2.5, 16, 32)) == [0]
+
+
+def test_a_flag_far_below_the_path_does_not_count_and_one_within_its_height_does() -> None:
+    # The player walks with its bottom at y = 48. Passing over a flag counts while the feet
+    # are no more than the flag's height (32 px) above its top: a flag whose top is 80 px
+    # down is exactly that far (outside), one whose top is half a pixel higher is inside.
+    assert _flags_counted_walking_right(Box(96, 80.5, 16, 32)) == []
+    assert _flags_counted_walking_right(Box(96, 79.5, 16, 32)) == [0]
+    assert _flags_counted_walking_right(Box(96, 400, 16, 32)) == []   # buried far below
+
+
+@given(st.floats(-40, 700), st.floats(-40, 200), st.floats(0.5, 120), st.floats(0.5, 120))
+@settings(max_examples=300, deadline=None)
+def test_a_few_platforms_are_found_by_their_routes_as_the_cells_would_find_them(
+        x: float, y: float, w: float, h: float) -> None:
+    world = World(replace(level_from_ascii(WIDE), platforms=(
+        *gliders(2), PlatformSpec(Route(((40.0, 20.0), (40.0, 100.0))), 16, 8, 30.0))))
+    index = world.platform_index
+    by_routes = index.tested_in(x, y, x + w, y + h)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(platforms, "FEW_PLATFORMS", 0)   # every query walks the cells
+        assert index.tested_in(x, y, x + w, y + h) == by_routes

@@ -8,6 +8,8 @@ import inspect
 import re
 from pathlib import Path
 
+from game.collision import axis_sweep
+from game.collision.tile_grid import TileGrid
 from game.sim import world
 from game.sim.world import World
 
@@ -50,3 +52,15 @@ def test_the_docstring_lists_the_steps_the_code_runs() -> None:
 
 def test_the_readmes_tour_lists_the_steps_the_code_runs() -> None:
     assert steps_in_the_readme() == steps_in_the_code()
+
+
+def test_the_tick_and_the_collision_path_carry_no_logging_code() -> None:
+    """The query log is a wrapper round the solids (game.sim.query_log): the tick only asks
+    the source named for each step, and the lookup and the moves count and log nothing."""
+    tick = inspect.getsource(World.step)
+    assert "purpose" not in tick
+    assert not re.search(r"^\s*(if|elif)\b[^\n]*\blog", tick, re.MULTILINE)
+    for plain in (TileGrid.entries_in, axis_sweep.move_x, axis_sweep.move_y,
+                  axis_sweep.ground_under, axis_sweep.slide_past_ceiling_corner):
+        source = inspect.getsource(plain)
+        assert not re.search(r"log|stats|purpose|count", source), plain.__qualname__

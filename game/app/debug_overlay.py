@@ -1,11 +1,11 @@
 """The F1 debug overlay: hitboxes, the cells and shapes the last tick tested, and its sweeps.
 
 Where it sits: drawn last in a frame, over the world and the HUD, when the player presses F1.
-It draws from what the last tick *recorded* (each body's ``last_x``/``last_y`` moves, the
-world's query log and ``world.stats``) and changes nothing: it never calls
-:meth:`TileGrid.entries_in`, whose work counters the stats are read from, and never moves a
-sprite. While the overlay is on, the tick keeps the query log (:class:`game.sim.world.Measure`):
-every lookup writes down what asked for it and the block of cells it visited.
+It draws from what the last tick *recorded* (each body's moves in ``world.moves``, the
+world's query log and ``world.stats``) and changes nothing: it never queries the solids
+and never moves a sprite. While the overlay is on, the tick asks its solids through the
+query log's wrapper (:class:`game.sim.world.Measure`, :mod:`game.sim.query_log`): every
+lookup writes down what asked for it, the block of cells it visited and the work it did.
 
 What it teaches (read the colours):
   * **Hitboxes are not sprites.** The 1 px outlines are the float boxes the physics uses
@@ -58,10 +58,12 @@ from game.app.hud import HUD_BAR_H_PX, SMALL_TEXT_ANTIALIAS, Color
 from game.app.render import screen_offset
 from game.app.stepping import key_label
 from game.collision.aabb import Box
+from game.collision.axis_sweep import Side
 from game.collision.contacts import Change, ContactEvent
-from game.sim.movement import Side
+from game.collision.shapes import TileKind, TileShape
+from game.collision.tile_grid import TileGrid
+from game.sim.query_log import QueryLog
 from game.sim.sprite import BoxSprite
-from game.sim.tilegrid import QueryLog, TileGrid, TileKind, TileShape
 from game.sim.world import PLAYER_KEY, ContactKey, World
 
 PLAYER_COLOR: Color = (80, 255, 96)
@@ -251,7 +253,7 @@ def _draw_tested(wash: Wash, world: World, clip: pygame.Rect,
                  offset: tuple[int, int]) -> tuple[list[Stamp], list[Outline]]:
     """Wash every cell in sight that the last tick's lookups visited; return the squares
     to stamp in each such cell and the outline of every shape they tested (read-only: cells
-    are read through ``shapes_at``, never ``entries_in``)."""
+    are read through ``shapes_at``, never queried)."""
     grid = world.grid
     tested = Checked(grid, world.query_log, within=cells_in_sight(grid, clip, offset))
     dx, dy = offset
@@ -300,9 +302,10 @@ def _draw_sweeps(wash: Wash, world: World, clip: pygame.Rect,
     dx, dy = offset
     bars: list[pygame.Rect] = []
     for body in world.bodies():
-        for move, color in ((body.last_x, SWEEP_X_COLOR), (body.last_y, SWEEP_Y_COLOR)):
-            if move is None:
-                continue
+        moves = world.moves.get(body)
+        if moves is None:
+            continue  # no move recorded (a respawn)
+        for move, color in ((moves.x, SWEEP_X_COLOR), (moves.y, SWEEP_Y_COLOR)):
             swept = move.swept
             if not math.isfinite(sum(swept)):  # a NaN or an infinity makes the sum one
                 continue

@@ -65,6 +65,8 @@ from game.app.places import (
     place_of,
     recolour,
 )
+from game.collision.shapes import TileKind
+from game.collision.tile_grid import TileGrid
 from game.sim.camera import Camera
 from game.sim.enemy import Enemy, Squashed
 from game.sim.level import Animation, Level, TileLayer
@@ -72,7 +74,6 @@ from game.sim.pickups import Checkpoint, Coin, Exit
 from game.sim.platforms import Platform
 from game.sim.player import Player
 from game.sim.sprite import ANIMATION_HZ, BoxSprite, Strip
-from game.sim.tilegrid import TileGrid, TileKind
 from game.sim.world import World
 
 SKY_PARALLAX = 0.25  # the sky moves this fraction of a pixel per pixel the camera moves

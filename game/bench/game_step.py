@@ -37,12 +37,13 @@ from game.bench.records import Row, values
 from game.bench.sizes import Sizes
 from game.bench.timing import clock, collector_off, percentile
 from game.collision.aabb import Box
+from game.collision.shapes import TileKind, TileShape
+from game.collision.tile_grid import TileGrid
 from game.levels import LEVELS_DIR, load_level
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, Actions, InputScript
 from game.sim.level import CoinSpec, EnemySpec, Level
 from game.sim.platforms import PlatformSpec, Route
-from game.sim.tilegrid import TileGrid, TileKind, TileShape
 from game.sim.world import World
 
 CHART = "game_step"

@@ -15,8 +15,8 @@ What it teaches: what a move costs and what it gets right, side by side, on the 
     bodies hold), made before the clock starts; the floor from bare floats; Arcade and the
     tutorial loop set their sprite's position or rect inside the timed move, since that is
     where they keep it.
-  * **The methods.** The game's :func:`~game.sim.movement.move_x` then
-    :func:`~game.sim.movement.move_y`; the same sweeps in plain floats
+  * **The methods.** The game's :func:`~game.collision.axis_sweep.move_x` then
+    :func:`~game.collision.axis_sweep.move_y`; the same sweeps in plain floats
     (:mod:`game.bench.plain_sweep`, the floor); the loop of the pygame tutorials (move the
     float position, round it into the rect, ``spritecollide`` against a group of every wall,
     snap the rect to the face it hit, one axis at a time); Arcade's
@@ -50,10 +50,11 @@ from game.bench.records import Row, values
 from game.bench.sizes import Sizes
 from game.bench.timing import clock, collector_off
 from game.collision.aabb import Box
+from game.collision.axis_sweep import move_x, move_y
+from game.collision.shapes import TileKind, TileShape
+from game.collision.tile_grid import TileGrid
 from game.levels import LEVELS_DIR, load_level
 from game.sim.inputs import InputScript
-from game.sim.movement import move_x, move_y
-from game.sim.tilegrid import TileGrid, TileKind, TileShape
 from game.sim.tuning import Tuning
 from game.sim.world import World
 
@@ -245,8 +246,9 @@ def recorded_moves(count: int) -> list[Sample]:
     samples: list[Sample] = []
     for tick in range(last + 1):
         world.step(script.held_at(tick))
-        across, down = world.player.last_x, world.player.last_y
-        if across is not None and down is not None:
+        moves = world.moves.get(world.player)
+        if moves is not None:
+            across, down = moves
             b = across.start
             samples.append(Sample(b.x, b.y, b.w, b.h, across.dx, down.dy))
     if len(samples) <= count:

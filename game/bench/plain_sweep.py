@@ -1,11 +1,12 @@
 """The floor: the game's axis sweeps written in plain floats, with no objects at all.
 
 Where it sits: a yardstick for :mod:`game.bench.peer`. It answers exactly what
-:func:`game.sim.movement.move_x` and :func:`~game.sim.movement.move_y` answer against solid
-tiles (the same swept region, the same strict cell range and overlap test, the same nearest
-face, the same map edges), but it takes and returns bare floats and reads walls stored as
-tuples of floats: no ``Box``, ``Move`` or ``Hit`` is built, no method is called per wall.
-The bench checks that it lands every recorded move exactly where the game's code does.
+:func:`game.collision.axis_sweep.move_x` and :func:`~game.collision.axis_sweep.move_y`
+answer against solid tiles (the same swept region, the same strict cell range and overlap
+test, the same nearest face, the same map edges), but it takes and returns bare floats and
+reads walls stored as tuples of floats: no ``Box``, ``Move`` or ``Hit`` is built, no method
+is called per wall. The bench checks that it lands every recorded move exactly where the
+game's code does.
 
 What it teaches: how much of a move's cost is the arithmetic and how much is the objects
 around it. The targets measure the game's own moves, and its whole tick per body, against
@@ -23,7 +24,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from game.sim.tilegrid import TileGrid, TileKind
+from game.collision.shapes import TileKind
+from game.collision.tile_grid import TileGrid
 
 Edges = tuple[float, float, float, float]   # left, top, right, bottom
 

@@ -1,9 +1,10 @@
 """Chart 4, walls: one body asking "which walls do I touch?" as the map grows.
 
 Where it sits: the fourth chart of ``python -m game.bench``. It times the game's wall lookup,
-:meth:`TileGrid.entries_in` (what :mod:`game.sim.movement` calls in every axis pass), against the
-two ways a pygame program often does it: ``pygame.sprite.spritecollide`` over a group holding
-every wall sprite, and ``Rect.collidelistall`` over a list of every wall rect.
+:meth:`TileGrid.entries_in` (what :mod:`game.collision.axis_sweep` asks in every axis
+pass), against the two ways a pygame program often does it: ``pygame.sprite.spritecollide``
+over a group holding every wall sprite, and ``Rect.collidelistall`` over a list of every
+wall rect.
 
 What it teaches:
   * **A tile map is already a spatial index.** Dividing the body's edges by the tile size
@@ -34,8 +35,9 @@ from game.bench.records import Row, values
 from game.bench.sizes import Sizes
 from game.bench.timing import Case, interleaved
 from game.collision.aabb import Box
+from game.collision.shapes import Entry, TileShape
+from game.collision.tile_grid import TileGrid
 from game.levels import FIRST_LEVEL, load_level
-from game.sim.tilegrid import Entry, TileGrid, TileShape
 
 CHART = "walls"
 SEED = 4
@@ -132,7 +134,7 @@ class WallMap:
     def answers_agree(self) -> bool:
         """Do the three methods find the same walls for every query?"""
         found = self.methods()
-        by_lookup = [{id(entry[5]) for entry in hits} for hits in found[LOOKUP]()]
+        by_lookup = [{id(entry.shape) for entry in hits} for hits in found[LOOKUP]()]
         by_sprites = [{id(w.shape) for w in hits} for hits in found[SPRITES]()]
         by_rects = [{id(self.shapes[i]) for i in hits} for hits in found[RECTS]()]
         return by_lookup == by_sprites == by_rects

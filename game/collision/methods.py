@@ -9,7 +9,7 @@ each against the committed CSVs, so the code and the run the README quotes agree
 
 What it teaches: **model no more than a scene needs.** A spatial structure costs code and
 bookkeeping on every move; it only pays once there are enough things to pair up. The level's
-walls are already a grid (the tile map), so bodies ask :class:`~game.sim.tilegrid.TileGrid`;
+walls are already a grid (the tile map), so bodies ask :class:`~game.collision.tile_grid.TileGrid`;
 the few dozen things a player can touch are tested one by one against the path it swept
 (coins through ``pygame.sprite.groupcollide``; see :meth:`game.sim.world.World.step`). The
 game makes those choices in that code, once, and reads nothing here. Only a crowd of movers

@@ -1,10 +1,10 @@
 """Collision response: push overlapping boxes apart, then trade momentum along the contact.
 
 Where it sits: after a broad phase has found an overlapping pair (the crate demo in
-:mod:`game.demos.crates`). The player never goes through here: :mod:`game.sim.movement` sweeps each
-move and stops flush, so the player never overlaps a wall in the first place. Response is
-for things that *do* end up inside each other after a tick, such as crates that are simply
-moved by their velocity.
+:mod:`game.demos.crates`). The player never goes through here:
+:mod:`game.collision.axis_sweep` sweeps each move and stops flush, so the player never
+overlaps a wall in the first place. Response is for things that *do* end up inside each
+other after a tick, such as crates that are simply moved by their velocity.
 
 What it teaches:
   * **The shortest way out.** An overlapping box can leave another in four ways: up, down,

@@ -1,8 +1,8 @@
 """A headless physics toy: crates sliding round a walled arena, bouncing off walls and each other.
 
 Where it sits: a demo scene beside the game, not part of it (the player moves by
-:mod:`game.sim.movement`, never by this). It ties the collision modules together in the order
-every physics step uses, and it is small enough to test for the laws it should obey.
+:mod:`game.collision.axis_sweep`, never by this). It ties the collision modules together
+in the order every physics step uses, and it is small enough to test for the laws it should obey.
 
 The order of :meth:`CrateScene.step`, written once:
 

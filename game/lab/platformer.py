@@ -1,10 +1,10 @@
 """Scene ``platformer``: the game's move, x then y, against tiles, with the cells each sweep tested.
 
-What it shows: a small tile map (a :class:`~game.sim.tilegrid.TileGrid`) and a red body
-moved exactly as the game moves its bodies: :func:`~game.sim.movement.move_x`, then
-:func:`~game.sim.movement.move_y`, then the ground probe
-:func:`~game.sim.movement.ground_under`. Blue is the region the x step swept, purple the y
-step's, and the washed cells are the ones :meth:`~game.sim.tilegrid.TileGrid.cells_covering`
+What it shows: a small tile map (a :class:`~game.collision.tile_grid.TileGrid`) and a red body
+moved exactly as the game moves its bodies: :func:`~game.collision.axis_sweep.move_x`, then
+:func:`~game.collision.axis_sweep.move_y`, then the ground probe
+:func:`~game.collision.axis_sweep.ground_under`. Blue is the region the x step swept, purple the y
+step's, and the washed cells are the ones :meth:`~game.collision.tile_grid.TileGrid.cells_covering`
 gives for each swept region, which is where ``entries_in`` looked (the panel prints the cells
 and shapes its counters recorded). Left/Right run, Up or Space jumps, F makes the run twenty
 times faster (over a tile and a half a tick): the body still stops flush against a wall.
@@ -16,11 +16,12 @@ from __future__ import annotations
 import pygame
 
 from game.collision.aabb import Box
+from game.collision.axis_sweep import Move, ground_under, move_x, move_y
+from game.collision.shapes import TileKind, TileShape
+from game.collision.tile_grid import CountedGrid, TileGrid
 from game.lab import canvas
 from game.lab.cost import CostMeter
 from game.lab.scene import AREA, Control, Layer, Point, Scene
-from game.sim.movement import Move, ground_under, move_x, move_y
-from game.sim.tilegrid import TileGrid, TileKind, TileShape
 
 TILE_PX = 32
 ORIGIN = (AREA.x + 6, AREA.y + 16)  # the map's (0, 0) on screen
@@ -109,11 +110,11 @@ class Platformer(Scene):
         box = self.body()
         self.last = []
         for axis, mover, delta in (("x", move_x, vx * dt_s), ("y", move_y, self.vy * dt_s)):
-            self.grid.stats.reset()
-            move = mover(self.grid, box, delta)
+            counted = CountedGrid(self.grid)  # the grid, with each query's work counted
+            move = mover(counted, box, delta)
             cells = list(self.grid.cells_covering(move.swept)) if delta else []
-            self.last.append((axis, move, cells, self.grid.stats.cells_visited,
-                              self.grid.stats.shapes_tested))
+            self.last.append((axis, move, cells, counted.stats.cells_visited,
+                              counted.stats.shapes_tested))
             box = move.box
         y_move = self.last[1][1]
         if y_move.hit is not None:

@@ -25,9 +25,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
+from game.collision.shapes import TileKind
 from game.levels.attributes import parse_number
 from game.sim.enemy import EnemyKind
-from game.sim.tilegrid import TileKind
 from game.sim.tuning import Tuning
 
 MemberType = Literal["int", "float", "string", "bool", "file"]

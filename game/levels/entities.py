@@ -16,6 +16,8 @@ from collections import defaultdict
 from dataclasses import dataclass
 
 from game.collision.aabb import Box
+from game.collision.shapes import TileKind
+from game.collision.tile_grid import TileGrid
 from game.levels.budget import (
     MAX_COINS,
     MAX_ENEMIES,
@@ -36,7 +38,6 @@ from game.levels.objects import MapObject
 from game.levels.spelling import meant
 from game.sim.level import CoinSpec, EnemySpec
 from game.sim.platforms import PlatformSpec, Route
-from game.sim.tilegrid import TileGrid, TileKind
 from game.sim.tuning import Tuning
 
 DEFAULT_COIN_PX = 8

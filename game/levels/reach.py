@@ -23,9 +23,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from game.collision.aabb import Box
+from game.collision.shapes import TileKind, TileShape
+from game.collision.tile_grid import TileGrid
 from game.sim.inputs import Action
 from game.sim.level import Level
-from game.sim.tilegrid import TileGrid, TileKind, TileShape
 from game.sim.tuning import Tuning
 from game.sim.world import World
 

@@ -2,7 +2,7 @@
 
 Where it sits: the loader calls :func:`build_grid` with every decoded tile layer, hidden
 ones included (a hidden layer is a common way to keep collision apart from decoration).
-The result is the :class:`~game.sim.tilegrid.TileGrid` that the movement code queries.
+The result is the :class:`~game.collision.tile_grid.TileGrid` that the movement code queries.
 
 What it teaches:
   * A tile's collision is its whole cell, unless rectangles were drawn for it in Tiled's
@@ -23,6 +23,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from game.collision.aabb import Box
+from game.collision.shapes import TileKind, TileShape
+from game.collision.tile_grid import TileGrid
 from game.levels.budget import FIX_SHAPES, MAX_SHAPES
 from game.levels.classes import TILE_KINDS
 from game.levels.errors import Findings
@@ -30,7 +32,6 @@ from game.levels.header import MapHeader
 from game.levels.layers import LayerNode
 from game.levels.tiledata import FLIPPED_D, FLIPPED_H, FLIPPED_V, split
 from game.levels.tilesets import Tilesets
-from game.sim.tilegrid import TileGrid, TileKind, TileShape
 
 Offsets = tuple[tuple[TileKind, Box], ...]  # shapes relative to the cell's top-left corner
 

@@ -51,12 +51,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from game.collision.aabb import Box
+from game.collision.shapes import TileKind
 from game.levels.loader import load_level
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, Actions, InputEvent, Recorder
 from game.sim.level import Level
 from game.sim.snapshot import Snapshot
-from game.sim.tilegrid import TileKind
 from game.sim.world import EventKind, World
 
 MOVE_TICKS = 6  # ticks one choice is held: 0.1 s, finer than a person presses keys

@@ -16,9 +16,9 @@ from dataclasses import dataclass
 from enum import Enum
 from pathlib import Path
 
+from game.collision.free_place import penetration_depth
 from game.sim.inputs import Actions
 from game.sim.level import Level
-from game.sim.movement import penetration_depth
 from game.sim.tuning import Tuning
 from game.sim.world import Event, EventKind, Measure, World
 

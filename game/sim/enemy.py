@@ -1,7 +1,7 @@
 """Enemies: walkers that patrol a floor, and hoppers that patrol it in hops.
 
 Where it sits: step 1 of a tick chooses each enemy's velocity; the enemies then move with
-the same axis passes as the player (:mod:`game.sim.movement`), and :meth:`Enemy.react` turns
+the same axis passes as the player (:mod:`game.collision.axis_sweep`), and :meth:`Enemy.react` turns
 them round when a wall stops them. Both kinds turn back at a ledge rather than fall off it.
 A stomped enemy leaves play at once and a :class:`Squashed` sprite takes its place on
 screen for a moment: drawn, never collided with.
@@ -15,10 +15,10 @@ from enum import Enum
 import pygame
 
 from game.collision.aabb import Box
+from game.collision.axis_sweep import Move
+from game.collision.shapes import ShapeSource, TileKind, TileShape
 from game.sim.body import Body
-from game.sim.movement import Move
 from game.sim.sprite import BoxSprite, Strip, animation_index
-from game.sim.tilegrid import Solids, TileKind, TileShape
 from game.sim.tuning import Tuning
 
 LEDGE_PROBE_PX = 1.0  # size of the square looked at just beyond the leading foot
@@ -50,9 +50,9 @@ class Enemy(Body):
         self.phase = math.floor(box.x / WALK_PHASE_COL_PX)
         self.ground_seen: TileShape | None = None  # a tile the ledge look-ahead last found
 
-    def decide(self, grid: Solids, tuning: Tuning) -> None:
+    def decide(self, solids: ShapeSource, tuning: Tuning) -> None:
         """Turn at a ledge, then walk (or hop) on, and fall."""
-        if self.on_ground and not self._ground_ahead(grid):
+        if self.on_ground and not self._ground_ahead(solids):
             self.direction = -self.direction
         self.vx = self.direction * self.speed_px_s
         if self.kind is EnemyKind.HOPPER:
@@ -70,7 +70,7 @@ class Enemy(Body):
         self.vy = -tuning.hopper_jump_speed_px_s
         self.rest_ticks_left = tuning.hopper_rest_ticks
 
-    def _ground_ahead(self, grid: Solids) -> bool:
+    def _ground_ahead(self, solids: ShapeSource) -> bool:
         """Is there ground in the square just beyond the leading foot?
 
         Two tiles answer first, without a lookup: the one the feet stand on, and the one the
@@ -89,9 +89,10 @@ class Enemy(Body):
                         and top < feet + LEDGE_PROBE_PX and feet < top + height):
                     return True
         hazard = TileKind.HAZARD
-        for entry in grid.entries_in(front, feet, front + LEDGE_PROBE_PX, feet + LEDGE_PROBE_PX):
-            if entry[4] is not hazard:
-                shape = entry[5]
+        for entry in solids.entries_in(front, feet, front + LEDGE_PROBE_PX,
+                                       feet + LEDGE_PROBE_PX):
+            if entry.kind is not hazard:
+                shape = entry.shape
                 self.ground_seen = shape if shape.col != -1 else None
                 return True
         return False

@@ -14,8 +14,8 @@ from pathlib import Path
 import pygame
 
 from game.collision.aabb import Box
+from game.collision.tile_grid import TileGrid
 from game.sim.platforms import PlatformSpec
-from game.sim.tilegrid import TileGrid
 
 
 @dataclass(frozen=True)

@@ -1,8 +1,8 @@
 """The player: turns held actions into a velocity, and reacts to what its moves hit.
 
-Where it sits: step 1 of a tick chooses the velocity (:meth:`Player.decide`); steps 3-4 move
-it (:mod:`game.sim.movement`); :meth:`Player.react` then reads the hits. The player never moves
-itself, so there is exactly one place positions change.
+Where it sits: step 1 of a tick chooses the velocity (:meth:`Player.decide`); steps 3-4
+move it (:mod:`game.collision.axis_sweep`); :meth:`Player.react` then reads the hits. The
+player never moves itself, so there is exactly one place positions change.
 
 What it teaches: the forgiving rules that make a platformer feel good, each a tunable in
 :class:`game.sim.tuning.Tuning` and a test in ``tests/test_feel.py``:
@@ -20,9 +20,9 @@ from __future__ import annotations
 import pygame
 
 from game.collision.aabb import Box
+from game.collision.axis_sweep import Move, Side
 from game.sim.body import Body
 from game.sim.inputs import Action, Actions
-from game.sim.movement import Move, Side
 from game.sim.sprite import ANIMATION_HZ, Strip, animation_index
 from game.sim.tuning import Tuning
 

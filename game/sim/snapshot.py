@@ -15,7 +15,7 @@ boxes, frozen records) or containers copied one level deep, so stepping on never
 snapshot already taken.
 
 >>> from game.sim.level import Level
->>> from game.sim.tilegrid import TileGrid
+>>> from game.collision.tile_grid import TileGrid
 >>> from game.collision.aabb import Box
 >>> from game.sim.inputs import Action
 >>> world = World(Level(Path("demo"), TileGrid(10, 10, 16, 16), Box(0, 0, 12, 14)))

@@ -11,16 +11,16 @@ comments in :meth:`World.step` and the README's tour name the same steps in the 
 1. **Intent**: the player reads the held actions, the enemies look ahead; each sets a velocity.
 2. **Platforms**: each moving platform advances along its path, pushing the bodies in its way
    and carrying its riders through the same swept moves, so never into a wall (one whose
-   route no body touches only counts the distance it travels; its box catches up when read).
-3. **x pass**: every body moves along x, swept against the tile grid, stopping flush.
+   route no body touches only advances; its box is worked out when next read).
+3. **x pass**: every body moves along x, swept against the level's solids, stopping flush.
 4. **y pass**: every body moves along y the same way and is placed; the floor it landed on,
    or else the 1-pixel probe, sets ``on_ground``.
 5. **React**: bodies read what their moves hit (land, bump, turn round).
 6. **Pickups**: coins by ``groupcollide`` with ``dokill``, on the path the player travelled
    (only on a tick when that path reaches a cell that holds a trigger).
 7. **Contacts**: the pairs the player touches; a tracker turns them into start/end events
-   (entering the exit completes the level); a checkpoint touched or passed for the first
-   time moves the respawn point there.
+   (entering the exit completes the level); a checkpoint touched or passed over for the
+   first time moves the respawn point there.
 8. **Enemies and hazards**: a touch from above is a stomp, any other touch hurts, and so do
    spikes, for as long as they are touched.
 9. **The void and the crush**: falling below the map, or being pushed into a wall by a
@@ -32,11 +32,15 @@ Before step 1 a squashed enemy's time on screen counts down; after step 9, when 
 asks for it, the deepest overlap of any body with a solid is measured (it should stay 0).
 
 Solids never go through ``groupcollide``: walls only meet bodies in the movement code.
+Each step asks the source of solids named for it in :class:`~game.sim.solids.Lookups`, and
+the moves of steps 3 and 4 are handed on (to the reactions, the probe, the triggers, and in
+``World.moves`` to the overlay), never left on the bodies to be read back.
 
 Two things a tick writes down beyond the game itself only when asked (:class:`Measure`):
 the deepest overlap of any body with a solid after resolution (the report's
 ``max_penetration_px``), and every lookup's purpose, cells and shapes (what the debug
-overlay draws). Neither changes what happens, and a tick nobody measures does neither.
+overlay draws: the sources are then wrapped by :mod:`game.sim.query_log`). Neither changes
+what happens, and a tick nobody measures does neither.
 """
 
 from __future__ import annotations
@@ -48,27 +52,28 @@ from enum import Enum
 import pygame
 
 from game.collision.aabb import Box
-from game.collision.contacts import ContactTracker
-from game.sim.body import Body
-from game.sim.camera import Camera
-from game.sim.enemy import Enemy, EnemyKind, Squashed
-from game.sim.inputs import Actions
-from game.sim.level import Level
-from game.sim.movement import (
+from game.collision.axis_sweep import (
     Edges,
     Move,
     Side,
     ground_under,
     move_x,
     move_y,
-    nearest_free_place,
-    penetration_depth,
     slide_past_ceiling_corner,
 )
+from game.collision.contacts import ContactTracker
+from game.collision.free_place import nearest_free_place, penetration_depth
+from game.collision.shapes import ShapeSource, TileKind
+from game.sim.body import Body, BodyMoves
+from game.sim.camera import Camera
+from game.sim.enemy import Enemy, EnemyKind, Squashed
+from game.sim.inputs import Actions
+from game.sim.level import Level
 from game.sim.pickups import Checkpoint, Coin, Exit, Trigger, TriggerCells
-from game.sim.platforms import Platform, PlatformIndex, SolidsWithout
+from game.sim.platforms import Platform, PlatformIndex
 from game.sim.player import Player
-from game.sim.tilegrid import QueryLog, TileKind
+from game.sim.query_log import QueryLog, logged_lookups
+from game.sim.solids import LevelSolids, Lookups
 from game.sim.tuning import Tuning
 
 
@@ -107,7 +112,8 @@ class Event:
 
 @dataclass
 class TickStats:
-    """What the last tick cost, recorded for the debug overlay and the report."""
+    """What the last tick cost, recorded for the debug overlay and the report (the cells
+    and shapes only while its lookups are logged, ``Measure.queries``; else 0)."""
 
     cells_visited: int = 0
     shapes_tested: int = 0
@@ -121,16 +127,16 @@ class Measure:
     ``penetration``: the deepest overlap of any body with a solid after resolution, kept in
     ``World.max_penetration_px`` (the runner turns it on for ``--report``, tests for their
     checks). ``queries``: every lookup's purpose, cells and shapes, kept in
-    ``World.query_log`` (the debug overlay turns it on).
+    ``World.query_log``, and their count in ``World.stats`` (the debug overlay turns it on).
     """
 
     penetration: bool = False
     queries: bool = False
 
 
-def crossed(body: Body, thing: Trigger | Enemy) -> bool:
-    """``collided=`` for pygame.sprite: did the body's path this tick overlap the thing?"""
-    return body.travelled_through(thing.box)
+def crossed(path: BodyMoves, thing: Trigger | Enemy) -> bool:
+    """Did the body's path this tick (its moves) overlap the thing?"""
+    return path.crosses(thing.box)
 
 
 @dataclass
@@ -148,11 +154,14 @@ class World:
             Platform(spec, number) for number, spec in enumerate(self.level.platforms))
         self._platform_list = list(self.platforms)
         self.platform_index = PlatformIndex(self.level.grid, self._platform_list)
-        # The level's tiles with this world's platforms as a second layer: every query of
-        # the tick goes here, and its counts and log are this world's own.
-        self.grid = self.solids = self.level.grid.with_movers(self.platform_index)
+        # The level's tiles with this world's platforms beside them: what every lookup asks.
+        self.grid = self.level.grid
+        self.solids = LevelSolids(self.grid, self.platform_index)
         self.map_w_px, self.map_h_px = self.grid.width_px, self.grid.height_px
-        self._solids_without = [SolidsWithout(self.grid, p) for p in self.platforms]
+        self.query_log = QueryLog()  # filled only while measure.queries is on
+        self._plain = Lookups.plain(self.solids, self._platform_list)
+        self._logged = logged_lookups(self.solids, self.query_log)
+        self.moves: dict[Body, BodyMoves] = {}  # the last tick's moves (the overlay draws them)
         self.checkpoints: pygame.sprite.Group[Checkpoint] = pygame.sprite.Group(
             Checkpoint(box) for box in self.level.checkpoints)
         self.checkpoint_reached: int | None = None
@@ -182,7 +191,6 @@ class World:
         self.contacts: ContactTracker[ContactKey] = ContactTracker()
         self.stats = TickStats()
         self.max_penetration_px = 0.0
-        self.query_log = QueryLog()  # filled only while measure.queries is on
         self.probe_ground(self.player)
         self.camera.follow(self.player.box, self.grid.width_px, self.grid.height_px)
 
@@ -194,13 +202,7 @@ class World:
         """Advance the level by one tick of ``tuning.tick_s`` seconds."""
         events: list[Event] = []
         dt = self.tuning.tick_s
-        solids = self.solids
-        self.grid.stats.reset()
-        # The query log, when asked for: each lookup below is written down under the
-        # purpose last set here, so the overlay can show exactly what this tick tested.
-        log = self.grid.log = self.query_log if self.measure.queries else None
-        if log is not None or self.query_log.queries:  # never leave an old tick's log behind
-            self.query_log.queries.clear()
+        look = self._lookups()  # the source of solids each step asks
         started = time.perf_counter()
 
         if self.squashed:
@@ -208,12 +210,10 @@ class World:
                 squash.fade()
 
         # 1. Intent: entities choose velocities; none of them moves itself.
-        if log is not None:
-            log.purpose = "ledge look-ahead"
         if self.player.decide(held, self.tuning):
             events.append(Event(EventKind.JUMP))
         for enemy in self.enemies:
-            enemy.decide(solids, self.tuning)
+            enemy.decide(look.ledges, self.tuning)
         bodies = self.bodies()
         before: dict[Body, Box] = {}
         for body in bodies:
@@ -222,68 +222,64 @@ class World:
 
         # 2. Platforms: each moves along its path, pushing what is in its way and carrying
         #    what rides it, through the same swept moves (so never into a wall). Only the
-        #    platforms a body could meet are moved; the others only count their distance.
-        if log is not None:
-            log.purpose = "platforms"
+        #    platforms a body could meet push or carry; the others only advance.
         awake = self._platforms_near(bodies)
         for platform in self._platform_list:
             if platform in awake:
-                for body in self._move_platform(platform, platform.next_point(dt), bodies):
+                pushed = self._move_platform(platform, dt, bodies, look.platforms[platform.number])
+                for body in pushed:
                     awake |= self._platforms_near([body])  # moved into another's reach?
             else:
-                platform.advance(dt)  # no body near it: only the distance travelled moves
+                platform.advance(dt)
 
         # 3. x pass: move along x and stop flush at the first solid face swept.
-        if log is not None:
-            log.purpose = "x sweep"
+        x_moves: list[Move] = []
         for body in bodies:
-            body.last_x = move_x(solids, body.box, body.vx * dt)
+            x_moves.append(move_x(look.x_sweep, body.box, body.vx * dt))
 
-        # 4. y pass: the same along y from where the x pass stopped; the body is placed (once
-        #    a tick) and the probe looks one pixel below the feet.
-        for body in bodies:
-            if log is not None:
-                log.purpose = "y sweep"
-            assert body.last_x is not None
-            self._move_y(body, body.last_x.box, body.vy * dt)
-            if log is not None:
-                log.purpose = "ground probe"
-            self.probe_ground(body)
+        # 4. y pass: the same along y from where the x pass stopped (a rise that clips a
+        #    ceiling's corner slides past it); the body is placed, once a tick, and the probe
+        #    looks one pixel below the feet.
+        moves = self.moves = {}
+        for body, x_move in zip(bodies, x_moves, strict=True):
+            both = moves[body] = self._move_y(body, x_move, body.vy * dt, look.y_sweep)
+            body.place(both.y.box)
+            self.probe_ground(body, both.y, look.ground_probe)
 
         # 5. React: each body reads what its own moves hit.
-        for body in bodies:
-            assert body.last_x is not None and body.last_y is not None
-            body.react(body.last_x, body.last_y)
+        for body, (x_move, y_move) in moves.items():
+            body.react(x_move, y_move)
 
         # 6. Pickups: coins vanish from their group as they are collected. Triggers are
         #    only tested on a tick whose path reaches a cell that holds one.
-        reach = self.player.reach()
+        path = moves[self.player]
+        reach = path.reach()
         near_trigger = self.trigger_cells.reached_by(*reach)
         if near_trigger:
+            def on_path(_: Player, coin: Coin) -> bool:
+                return crossed(path, coin)
             for coins in pygame.sprite.groupcollide(
-                    self.players, self.coins, False, True, collided=crossed).values():
+                    self.players, self.coins, False, True, collided=on_path).values():
                 events.extend(Event(EventKind.COIN, coin.value, coin.box) for coin in coins)
 
         # 7. Contacts: what the player touches now. The tracker reports only what changed,
         #    so entering the exit is one event however long the player stands in it.
-        if log is not None:
-            log.purpose = "hazards"
-        touching_now = self._player_contacts(reach, near_trigger)
+        touching_now = self._player_contacts(path, reach, near_trigger, look.hazards)
         changes = self.contacts.update(touching_now)
         entered = [key for pair in changes.started for key in pair]
         if entered:
             events.extend(Event(EventKind.EXIT) for kind, _ in entered if kind == "exit")
-        # A checkpoint counts the first time the player touches it or passes it (a jump
-        # over the flag counts too): the respawn point moves there, and never back to an
-        # earlier flag walked past again.
+        # A checkpoint counts the first time the player touches it or passes over it (a
+        # jump over the flag counts; walking past below its foot, or along a floor more than
+        # the flag's height above its top, does not): the respawn
+        # point moves there, and never back to an earlier flag walked past again.
         for number, flag in enumerate(self.checkpoints):
             if number in self.checkpoints_counted:
                 continue
-            if ("checkpoint", number) in entered or self._passed(before[self.player], flag.box):
-                if log is not None:
-                    log.purpose = "checkpoint spawn"
+            if (("checkpoint", number) in entered
+                    or self._passed_over(before[self.player], reach, flag.box)):
                 self.checkpoints_counted.add(number)
-                self.spawn = self._checkpoint_spawn(number)
+                self.spawn = self._checkpoint_spawn(number, look.checkpoint_spawn)
                 self.checkpoint_reached = number
                 for flag_number, other in enumerate(self.checkpoints):
                     other.reached = flag_number == number
@@ -307,7 +303,7 @@ class World:
                 hurt = True
 
         # 9. The void and the crush: falling below the map, or being pushed into a wall by a
-        #    platform, costs a life (and removes an enemy).
+        #    platform, costs a life (and removes an enemy). A respawn leaves no path behind.
         if self.player.box.y >= self.map_h_px or self.player.crushed:
             hurt = True
         for enemy in self.enemies:
@@ -316,144 +312,152 @@ class World:
         if hurt and not any(e.kind is EventKind.EXIT for e in events):
             events.append(Event(EventKind.HURT, 1, self.player.box))
             self.player.respawn(self.spawn, self.tuning.invulnerable_ticks)
+            del moves[self.player]
 
-        self.stats = TickStats(self.grid.stats.cells_visited, self.grid.stats.shapes_tested,
+        counted = self.query_log.stats  # the work of the lookups, when they are written down
+        self.stats = TickStats(counted.cells_visited, counted.shapes_tested,
                                time.perf_counter() - started)
         # Measurement only, when asked: how deep does any body sit in a solid after
-        # resolution? (Its lookups are logged apart and left out of the stats above.)
+        # resolution? (Its lookups are left out of the stats above.)
         if self.measure.penetration:
-            if log is not None:
-                log.purpose = "penetration (measurement)"
             for body in self.bodies():
                 self.max_penetration_px = max(self.max_penetration_px,
-                                              penetration_depth(solids, body.box))
+                                              penetration_depth(look.penetration, body.box))
 
         # 10. Camera: follow the player, inside the map.
         self.camera.follow(self.player.box, self.map_w_px, self.map_h_px)
         return events
 
-    def probe_ground(self, body: Body) -> None:
+    def _lookups(self) -> Lookups:
+        """The sources this tick asks: plain, or each wrapped to write its lookups in a
+        fresh :attr:`query_log` while ``measure.queries`` is on (the debug overlay)."""
+        self.query_log.clear()
+        return self._logged if self.measure.queries else self._plain
+
+    def probe_ground(self, body: Body, y_move: Move | None = None,
+                     solids: ShapeSource | None = None) -> None:
         """The one-pixel probe under the feet: what the body stands (or rides) on, if anything.
 
-        A y move that ended with the feet exactly on a floor has found it already: the shape
-        it hit is the one the probe would find first. So the probe only runs when it did not.
+        A y move (``y_move``) that ended with the feet exactly on a floor has found it
+        already: the shape it hit is the one the probe would find first. So the probe only
+        runs when it did not.
         """
-        landed = body.last_y.hit if body.last_y is not None else None
+        landed = y_move.hit if y_move is not None else None
         if landed is not None and landed.side is Side.BOTTOM and landed.face == body.box.bottom:
             body.standing_on = landed.shape
         else:
-            body.standing_on = ground_under(self.solids, body.box,
+            body.standing_on = ground_under(solids or self.solids, body.box,
                                             through_one_way=body.dropping_through)
         body.on_ground = body.standing_on is not None
         body.riding = (None if body.standing_on is None or body.standing_on.col != -1
                        else self.platform_index.platform_of(body.standing_on))
 
-    def _player_contacts(self, reach: Edges, near_trigger: bool,
-                         ) -> set[tuple[ContactKey, ContactKey]]:
-        """The pairs (player, thing) whose boxes the player's path overlapped this tick.
+    def _player_contacts(self, path: BodyMoves, reach: Edges, near_trigger: bool,
+                         hazards: ShapeSource) -> set[tuple[ContactKey, ContactKey]]:
+        """The pairs (player, thing) whose boxes the player's ``path`` overlapped this tick.
 
         ``reach`` bounds the whole path: an enemy outside it is not tested further, and the
-        spikes are looked up only when it reaches a cell that holds one; exits and
-        checkpoints are tested only when the path is ``near_trigger``.
+        spikes are looked up (in ``hazards``) only when it reaches a cell that holds one;
+        exits and checkpoints are tested only when the path is ``near_trigger``.
         """
-        player = self.player
         pairs: set[tuple[ContactKey, ContactKey]] = set()
         if near_trigger:
             pairs |= {(PLAYER_KEY, ("exit", number)) for number, goal in enumerate(self.exits)
-                      if crossed(player, goal)}
+                      if crossed(path, goal)}
             pairs |= {(PLAYER_KEY, ("checkpoint", number))
-                      for number, flag in enumerate(self.checkpoints) if crossed(player, flag)}
+                      for number, flag in enumerate(self.checkpoints) if crossed(path, flag)}
         left, top, right, bottom = reach
         for number, enemy in self.enemy_by_number.items():
             x, y, w, h = enemy.box
             if (x < right and left < x + w and y < bottom and top < y + h and enemy.alive()
-                    and crossed(player, enemy)):
+                    and crossed(path, enemy)):
                 pairs.add((PLAYER_KEY, ("enemy", number)))
         if not self.hazard_cells.reached_by(*reach):
             return pairs  # no spike anywhere near the path
         cols, hazard = self.grid.cols, TileKind.HAZARD
-        for move in (player.last_x, player.last_y):
-            if move is not None:
-                pairs |= {(PLAYER_KEY, ("hazard", entry[5].row * cols + entry[5].col))
-                          for entry in self.grid.entries_in(*move.path_edges)
-                          if entry[4] is hazard}
+        for move in path:
+            pairs |= {(PLAYER_KEY, ("hazard", entry.shape.row * cols + entry.shape.col))
+                      for entry in hazards.entries_in(*move.path_edges)
+                      if entry.kind is hazard}
         return pairs
 
-    def _move_y(self, body: Body, box: Box, dy: float) -> None:
-        """The y pass for one body from ``box`` (where its x move ended), with corner
-        correction for a rise that clips a ceiling; then the body is placed."""
-        move = move_y(self.solids, box, dy, through_one_way=body.dropping_through)
+    def _move_y(self, body: Body, x_move: Move, dy: float, solids: ShapeSource) -> BodyMoves:
+        """The y pass for one body from where its x move ended, with corner correction for a
+        rise that clips a ceiling (the slide sideways joins the x move)."""
+        box = x_move.box
+        move = move_y(solids, box, dy, through_one_way=body.dropping_through)
         if move.hit is not None and move.hit.side is Side.TOP and body.corner_correction_px:
-            slid = slide_past_ceiling_corner(self.solids, box, dy, body.corner_correction_px)
+            slid = slide_past_ceiling_corner(solids, box, dy, body.corner_correction_px)
             if slid is not None:
-                side, move = slid
-                run = body.last_x or side
-                body.last_x = Move(side.box, run.hit, run.start,
-                                   swept=run.swept.union(side.swept))
+                x_move, move = x_move.followed_by(slid.side), slid.rise
         # Below the map is the void (a lost life) and far above it the sky ends, so a body
         # flung at any speed keeps coordinates that a Rect can hold.
         x, y, w, h = move.box
         if not -SKY_LIMIT_PX <= y <= self.map_h_px:
             y = min(max(y, -SKY_LIMIT_PX), float(self.map_h_px))
             move = Move(Box(x, y, w, h), move.hit, move.start, move.dx, move.dy)
-        body.last_y = move
-        body.place(move.box)
+        return BodyMoves(x_move, move)
 
     def _platforms_near(self, bodies: list[Body]) -> set[Platform]:
         """The platforms a body could meet this tick: those whose route region it touches,
         and those it rides."""
         if not self._platform_list:
             return set()
-        near = self.platform_index.near(body.box for body in bodies)
-        near.update(body.riding for body in bodies if body.riding is not None)
+        near = self.platform_index.near([body.box for body in bodies])
+        for body in bodies:
+            if body.riding is not None:
+                near.add(body.riding)
         return near
 
-    def _move_platform(self, platform: Platform, to: tuple[float, float],
-                       bodies: list[Body]) -> list[Body]:
-        """Move a platform one axis at a time, pushing bodies in its way and carrying riders;
-        return the bodies it moved."""
+    def _move_platform(self, platform: Platform, dt: float, bodies: list[Body],
+                       others: ShapeSource) -> list[Body]:
+        """Advance a platform one tick, one axis at a time, pushing bodies in its way and
+        carrying its riders against ``others`` (the solids less this platform); return the
+        bodies it moved."""
         x, y, w, h = platform.box
-        dx, dy = to[0] - x, to[1] - y
+        platform.advance(dt)
+        to_x, to_y = platform.box.x, platform.box.y
+        dx, dy = to_x - x, to_y - y
         moved: list[Body] = []
         if dx == 0 and dy == 0:
             return moved
         riders = [body for body in bodies if body.riding is platform]
-        others = self._solids_without[platform.number]
-        for step, axis in ((dx, "x"), (dy, "y")):
+        for step, axis, at in ((dx, "x", Box(to_x, y, w, h)), (dy, "y", Box(to_x, to_y, w, h))):
             if step == 0:
                 continue
-            if axis == "x":
-                platform.place(Box(to[0], y, w, h))
-            else:
-                platform.place(Box(to[0], to[1], w, h))
             move = move_x if axis == "x" else move_y
-            left, top, right, bottom = platform.entry[:4]
+            left, top, right, bottom = at.left, at.top, at.right, at.bottom
             solid = right > left and bottom > top
             for body in bodies:
-                x, y, w, h = body.box
-                if (solid and w > 0 and h > 0 and x < right and left < x + w and y < bottom
-                        and top < y + h):
-                    body.place(move(others, body.box, _push_needed(platform.box, body.box,
-                                                                   axis, step)).box)
-                    body.crushed = body.box.overlaps(platform.box)
+                bx, by, bw, bh = body.box
+                if (solid and bw > 0 and bh > 0 and bx < right and left < bx + bw
+                        and by < bottom and top < by + bh):
+                    body.place(move(others, body.box,
+                                    _push_needed(at, body.box, axis, step)).box)
+                    body.crushed = body.box.overlaps(at)
                     moved.append(body)
                 elif body in riders:
                     body.place(move(others, body.box, step).box)
                     moved.append(body)
         return moved
 
-    def _passed(self, was: Box, flag: Box) -> bool:
-        """Did the player's centre reach or cross the flag's centre line this tick?"""
+    def _passed_over(self, was: Box, reach: Edges, flag: Box) -> bool:
+        """Did the player's centre reach or cross the flag's centre line this tick, with its
+        path within the flag's height of it: some of the path above the flag's foot (not
+        below it), and some no higher than one flag height over its top (a jump over it,
+        not a walk along a floor far above it)?"""
         centre = flag.x + flag.w / 2
         now = self.player.box
-        return (was.x + was.w / 2 - centre) * (now.x + now.w / 2 - centre) <= 0
+        crossed_line = (was.x + was.w / 2 - centre) * (now.x + now.w / 2 - centre) <= 0
+        _, path_top, _, path_bottom = reach
+        return crossed_line and path_top < flag.bottom and path_bottom > flag.top - flag.h
 
-    def _checkpoint_spawn(self, number: int) -> Box:
+    def _checkpoint_spawn(self, number: int, solids: ShapeSource) -> Box:
         """Where the player comes back after touching checkpoint ``number``: standing in it."""
         flag = list(self.checkpoints)[number].box
         w, h = self.level.spawn.w, self.level.spawn.h
-        return nearest_free_place(self.solids, Box(flag.x + (flag.w - w) / 2,
-                                                   flag.bottom - h, w, h))
+        return nearest_free_place(solids, Box(flag.x + (flag.w - w) / 2,
+                                              flag.bottom - h, w, h))
 
     @staticmethod
     def _came_from_above(player_before: Box, enemy_before: Box) -> bool:

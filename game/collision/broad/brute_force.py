@@ -1,6 +1,6 @@
 """The broad-phase contract, and brute force: the O(n²) answer every other broad phase must match.
 
-Where it sits: under the physics, beside :mod:`game.sim.tilegrid`. A *broad phase* answers
+Where it sits: under the physics, beside :mod:`game.collision.tile_grid`. A *broad phase* answers
 "which pairs of these boxes might collide?" cheaply, so the exact test (and the push-apart
 in :mod:`game.collision.response`) only runs on pairs that matter. This module states what a broad
 phase is; :mod:`game.collision.broad.spatial_grid`, :mod:`game.collision.broad.quadtree` and

@@ -2,8 +2,8 @@
 
 Where it sits: a broad phase (see :mod:`game.collision.broad.brute_force` for the contract). The
 crate demo
-(:mod:`game.demos.crates`) uses it. The level's walls use :mod:`game.sim.tilegrid` instead, which
-is the
+(:mod:`game.demos.crates`) uses it. The level's walls use :mod:`game.collision.tile_grid`
+instead, which is the
 same idea fixed to the tile map; this one is for items that come, go and move every tick.
 
 What it teaches:
