@@ -372,7 +372,8 @@ TERRAIN_CLASSES: dict[int, str] = {**{tile_id: "Solid" for tile_id in TERRAIN_ID
 
 
 def plank_tile_id(mask: int) -> int:
-    """The plank tile of ``terrain.png`` for a one-way cell with planks to its ``EAST`` and/or ``WEST``."""
+    """The plank tile of ``terrain.png`` for a one-way cell with planks to its ``EAST``
+    and/or ``WEST``."""
     mask &= EAST | WEST
     return next(tile_id for tile_id, tile_mask in PLANK_MASKS.items() if tile_mask == mask)
 GRASS_SIDE = (  # where grass meets the open side of a top corner: it hangs over the edge
@@ -931,8 +932,8 @@ def wang_id(mask: int) -> str:
 
 
 def wangsets_tsx() -> list[str]:
-    """The terrain tileset's terrain sets (Tiled 1.8's ``<wangsets>``): ``Ground``, a *mixed* set, so
-    Tiled's Terrain Brush picks each ground cell's tile from its eight neighbours; and
+    """The terrain tileset's terrain sets (Tiled 1.8's ``<wangsets>``): ``Ground``, a *mixed*
+    set, so Tiled's Terrain Brush picks each ground cell's tile from its eight neighbours; and
     ``Planks``, an *edge* set whose ends close where a row of planks stops. Every tile of the
     first is Solid and of the second OneWay, so painting never changes what collides."""
     top = terrain_tile_id(WEST | SOUTH_WEST | SOUTH | SOUTH_EAST | EAST)
