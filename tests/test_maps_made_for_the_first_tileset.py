@@ -8,6 +8,7 @@ import shutil
 from pathlib import Path
 
 import pygame
+import pytest
 
 from game.levels import LEVELS_DIR, check_level, load_level
 from game.tools import terrain
@@ -104,3 +105,15 @@ def test_painting_terrain_adds_the_terrain_tileset_after_the_others(tmp_path: Pa
     assert collision_grid(path) == COLLIDES
     assert [str(error) for error in check_level(path).errors] == []
     assert terrain.main(["--check", str(path)]) == 0
+
+
+def test_painting_terrain_where_a_tileset_is_missing_says_so_and_changes_nothing(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    path = old_map(tmp_path)
+    (tmp_path / "assets" / "banner.tsx").unlink()
+    before = path.read_text(encoding="utf-8")
+    assert terrain.main([str(path)]) == 1
+    error = capsys.readouterr().err
+    assert error.startswith(f"{path}: the tileset ../assets/banner.tsx cannot be read")
+    assert error.count("\n") == 1 and "Traceback" not in error
+    assert path.read_text(encoding="utf-8") == before

@@ -137,10 +137,11 @@ def tile_count(tag: str, folder: Path | None) -> int:
     try:
         root = ET.parse(folder / name).getroot()
         return int(root.get("tilecount", ""))
-    except (OSError, ET.ParseError, ValueError) as error:
-        raise TerrainError(f"cannot read the tile count of the tileset {name} "
-                           f"({error}); fix it, or add {TERRAIN_TILESET_NAME} in Tiled "
-                           "(Map > Add External Tileset)") from None
+    except (OSError, ET.ParseError, ValueError):
+        raise TerrainError(f"the tileset {name} cannot be read or does not say how many tiles "
+                           f"it has, so the first free gid for {TERRAIN_TILESET_NAME} is not "
+                           f"known; fix it, or add {TERRAIN_TILESET_NAME} in Tiled (Map > "
+                           "Add External Tileset)") from None
 
 
 def repaint_map(text: str, folder: Path | None = None) -> str:
