@@ -110,7 +110,7 @@ def _copy_of_first_level(folder: Path, lift_exit_px: int) -> Path:
     assets = LEVELS_DIR.parent / "assets"
     (folder / "levels").mkdir()
     (folder / "assets").mkdir()
-    for name in ("tiles.tsx", "tiles.png"):
+    for name in ("tiles.tsx", "tiles.png", "terrain.tsx", "terrain.png"):
         (folder / "assets" / name).write_bytes((assets / name).read_bytes())
     text = FIRST_LEVEL.read_text(encoding="utf-8")
     exit_box = load_level(FIRST_LEVEL).exits[0]

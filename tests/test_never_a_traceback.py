@@ -307,8 +307,7 @@ def test_random_bytes_as_a_map_or_a_save_never_raise(tmp_path: Path, content: by
     JsonFile(save).load(Settings.from_json, Settings)
 
 
-TEMPLATE = FIRST_LEVEL.read_text(encoding="utf-8").replace('source="../assets/tiles.tsx"',
-                                                           'source="tiles.tsx"')
+TEMPLATE = FIRST_LEVEL.read_text(encoding="utf-8").replace('source="../assets/', 'source="')
 
 
 @settings(max_examples=60, deadline=None,
@@ -316,7 +315,7 @@ TEMPLATE = FIRST_LEVEL.read_text(encoding="utf-8").replace('source="../assets/ti
 @given(number=NUMBERS, where=st.sampled_from(["csv", "x", "width", "points", "gravity"]))
 def test_random_numbers_anywhere_in_a_map_are_one_sentence_or_a_playable_level(
         tmp_path: Path, number: str, where: str) -> None:
-    for name in ("tiles.tsx", "tiles.png"):
+    for name in ("tiles.tsx", "tiles.png", "terrain.tsx", "terrain.png"):
         (tmp_path / name).write_bytes((ROOT / "assets" / name).read_bytes())
     quoted = number.replace("&", "&amp;").replace('"', "&quot;").replace("<", "&lt;")
     quoted = "".join(c for c in quoted if c.isprintable())

@@ -85,7 +85,7 @@ def test_an_unknown_setting_is_an_error_that_lists_the_settings(tmp_path: Path) 
     bad = tmp_path / "levels" / "bad.tmx"
     bad.parent.mkdir()
     (tmp_path / "assets").mkdir()
-    for name in ("tiles.tsx", "tiles.png"):
+    for name in ("tiles.tsx", "tiles.png", "terrain.tsx", "terrain.png"):
         (tmp_path / "assets" / name).write_bytes((LEVELS_DIR.parent / "assets" / name).read_bytes())
     bad.write_text(text.replace('value="meadow"', 'value="moon"'), encoding="utf-8")
     findings = check_level(bad)

@@ -1,10 +1,14 @@
-"""The tileset's terrain: Tiled can paint it, the shipped maps are painted with it, and painting
-it changed nothing that collides."""
+"""The terrain tileset: Tiled can paint it, the shipped maps are painted with it, painting it
+changed nothing that collides, and the 32-tile tileset that maps made before it rely on is as
+it was."""
 
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 from pathlib import Path
+
+import pygame
+import pytest
 
 from game.levels import LEVELS_DIR
 from game.tools import art, terrain
@@ -18,12 +22,29 @@ def test_every_shipped_map_collides_exactly_as_before_its_ground_was_repainted()
     assert all_grids() == RECORDED.read_text(encoding="utf-8")
 
 
-def test_the_tileset_file_is_the_one_the_art_script_writes() -> None:
+def test_the_tileset_files_are_the_ones_the_art_script_writes() -> None:
     assert (ASSETS / "tiles.tsx").read_text(encoding="utf-8") == art.tileset_tsx()
+    assert (ASSETS / "terrain.tsx").read_text(encoding="utf-8") == art.terrain_tsx()
 
 
-def test_the_tileset_declares_a_mixed_terrain_set_with_every_edge_and_corner() -> None:
+@pytest.mark.parametrize("name", ["tiles.png", "terrain.png"])
+def test_the_tileset_images_are_the_ones_the_art_script_draws(name: str) -> None:
+    draw, size = art.IMAGES[name]
+    committed = pygame.image.load(str(ASSETS / name))
+    assert committed.get_size() == size
+    assert pygame.image.tobytes(committed, "RGBA") == pygame.image.tobytes(draw(), "RGBA")
+
+
+def test_the_tileset_keeps_its_32_tiles_and_their_classes() -> None:
     root = ET.parse(ASSETS / "tiles.tsx").getroot()
+    assert root.get("tilecount") == "32" and root.find("wangsets") is None
+    classes = {int(t.get("id", "-1")): t.get("type") for t in root.iter("tile")}
+    assert classes == {0: "Solid", 1: "Solid", 2: "Solid", 3: "Solid", 4: "Solid",
+                       5: "OneWay", 6: "Hazard", 7: "Solid"}  # as the first version had them
+
+
+def test_the_terrain_tileset_declares_a_mixed_terrain_set_with_every_edge_and_corner() -> None:
+    root = ET.parse(ASSETS / "terrain.tsx").getroot()
     wangsets = root.findall("wangsets/wangset")
     assert [(w.get("name"), w.get("type")) for w in wangsets] == [("Ground", "mixed"),
                                                                   ("Planks", "edge")]
@@ -51,9 +72,11 @@ def test_every_shipped_map_is_painted_with_the_terrain_tiles() -> None:
     assert terrain.main(["--check", *map(str, maps)]) == 0
     for path in maps:
         text = path.read_text(encoding="utf-8")
-        used = {int(n) - 1 for n in text.split("<data")[-1].replace("\n", ",").split(",")
+        assert '<tileset firstgid="1" source="' in text, path.name
+        assert 'firstgid="33" source="../assets/terrain.tsx"' in text.replace("../../", "../")
+        used = {int(n) - 33 for n in text.split("<data")[-1].replace("\n", ",").split(",")
                 if n.strip().isdigit()}
-        assert used & set(art.TERRAIN_IDS) - {art.LONE_BLOCK}, path.name
+        assert used & set(art.TERRAIN_IDS) - {art.terrain_tile_id(0)}, path.name
 
 
 def test_repainting_a_map_fixes_a_hand_placed_ground_tile() -> None:
@@ -74,15 +97,15 @@ def test_repainting_a_map_fixes_a_hand_placed_ground_tile() -> None:
 
 
 def test_the_planks_end_where_their_row_stops_and_stay_one_way() -> None:
-    root = ET.parse(ASSETS / "tiles.tsx").getroot()
+    root = ET.parse(ASSETS / "terrain.tsx").getroot()
     planks = root.findall("wangsets/wangset")[1]
     classes = {int(t.get("id", "-1")): t.get("type") for t in root.iter("tile")}
     wang = {t.get("wangid"): int(t.get("tileid", "-1")) for t in planks.iter("wangtile")}
     assert set(wang) == {"0,0,1,0,0,0,1,0", "0,0,1,0,0,0,0,0", "0,0,0,0,0,0,1,0"}
     assert all(classes[tile_id] == "OneWay" for tile_id in wang.values())
-    first = 1  # the tileset's first gid in a map
+    first, terrain_first = 1, 33  # the tilesets' first gids in a map
     row = [[0, first + art.ONE_WAY, first + art.ONE_WAY, first + art.ONE_WAY, 0,
             first + art.ONE_WAY]]
-    assert terrain.repaint_rows(row, first) == [[0, first + art.PLANK_LEFT, first + art.ONE_WAY,
-                                                 first + art.PLANK_RIGHT, 0,
-                                                 first + art.PLANK_LONE]]
+    assert terrain.repaint_rows(row, first, terrain_first) == [[
+        0, terrain_first + art.PLANK_LEFT, terrain_first + art.PLANK_MIDDLE,
+        terrain_first + art.PLANK_RIGHT, 0, terrain_first + art.PLANK_LONE]]

@@ -56,8 +56,9 @@ def resaved(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
         project = tmp_path_factory.mktemp(variant)
         shutil.copytree(LEVELS_DIR, project / "levels")
         shutil.copytree(LEVELS_DIR.parent / "assets", project / "assets")
-        tileset = project / "assets" / "tiles.tsx"
-        tiled("--export-tileset", tileset, tileset, home=home)
+        for name in ("tiles.tsx", "terrain.tsx"):
+            tileset = project / "assets" / name
+            tiled("--export-tileset", tileset, tileset, home=home)
         for level in SHIPPED:
             copy = project / "levels" / level.name
             tiled("--export-map", *options, copy, copy, home=home)

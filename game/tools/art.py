@@ -11,8 +11,10 @@ Run from the repository root::
 
 This (re)writes, in ``assets/`` next to the ``game`` package:
 
-* ``tiles.png`` and ``tiles.tsx``: the 16x16 tileset and its Tiled tileset file, with the
-  terrain sets that let Tiled paint ground and planks with their edges
+* ``tiles.png`` and ``tiles.tsx``: the 16x16 tileset of 32 tiles and its Tiled tileset file
+  (ground, planks, spikes and decor, each id meaning what it always has)
+* ``terrain.png`` and ``terrain.tsx``: the terrain tileset, a ground tile for each way a cell
+  meets the air and planks with closed ends, with the terrain sets that let Tiled paint them
 * ``player.png``, ``enemy.png``, ``coin.png``: horizontal sprite-sheet strips
 * ``exit.png``, ``heart.png``: single images
 * ``sky.png``, ``background.png`` and ``places/NAME-sky.png``, ``places/NAME-scenery.png``:
@@ -63,8 +65,11 @@ Painter = Callable[[pygame.Surface], None]
 
 TILE = 16
 TILESET_COLUMNS = 8
-TILESET_ROWS = 10  # 4 rows of single tiles, then 6 of terrain
+TILESET_ROWS = 4  # tiles.tsx: 32 tiles, the last 10 of them empty
 TILE_COUNT = TILESET_COLUMNS * TILESET_ROWS
+TERRAIN_COLUMNS = 8
+TERRAIN_ROWS = 7  # terrain.tsx: 6 rows of ground looks, then a row of planks
+TERRAIN_COUNT = TERRAIN_COLUMNS * TERRAIN_ROWS
 
 FRAME = 16  # player and enemy frames are FRAME x FRAME
 PLAYER_FRAME_COUNT = 8  # 2 idle, 4 run, 1 jump, 1 fall
@@ -138,7 +143,8 @@ SKY_HIGH: RGB = (92, 150, 250)
 CLOUD_SHADE: RGB = (214, 230, 250)
 
 # --------------------------------------------------------------------------
-# Tile ids (row-major in tiles.png) and their Tiled classes
+# Tile ids (row-major in tiles.png) and their Tiled classes: maps made since the first
+# version rely on them, so an id never changes meaning and the tileset never grows
 # --------------------------------------------------------------------------
 
 GROUND = 0
@@ -163,9 +169,6 @@ FENCE = 18
 BLUE_FLOWER = 19
 PEBBLES = 20
 TALL_GRASS = 21
-PLANK_LEFT = 22
-PLANK_RIGHT = 23
-PLANK_LONE = 24
 
 TILE_CLASSES: dict[int, str] = {
     GROUND: "Solid",
@@ -174,9 +177,6 @@ TILE_CLASSES: dict[int, str] = {
     GROUND_LEFT: "Solid",
     GROUND_RIGHT: "Solid",
     ONE_WAY: "OneWay",
-    PLANK_LEFT: "OneWay",
-    PLANK_RIGHT: "OneWay",
-    PLANK_LONE: "OneWay",
     SPIKES: "Hazard",
     LONE_BLOCK: "Solid",
 }
@@ -344,31 +344,36 @@ def blob_mask(neighbours: int) -> int:
 
 
 BLOB_MASKS = tuple(sorted({blob_mask(bits) for bits in range(256)}))  # 47, 0 first
-TERRAIN_FIRST = 32  # the terrain tiles start at the first tile of row 4
-TERRAIN_COLUMNS = TILESET_COLUMNS
 
 
 def terrain_tile_id(mask: int) -> int:
-    """The tile that draws a ground cell with these solid neighbours (any 8-bit mask): the
-    lone block for none, else one of the terrain tiles from :data:`TERRAIN_FIRST`."""
-    mask = blob_mask(mask)
-    if mask == 0:
-        return LONE_BLOCK
-    return TERRAIN_FIRST + BLOB_MASKS.index(mask) - 1
+    """The tile of ``terrain.png`` that draws a ground cell with these solid neighbours (any
+    8-bit mask): the lone block (id 0) for none, then one id for each of the 47 looks.
+
+    >>> terrain_tile_id(0), terrain_tile_id(0xFF)
+    (0, 46)
+    """
+    return BLOB_MASKS.index(blob_mask(mask))
 
 
-TERRAIN_IDS = {terrain_tile_id(mask): mask for mask in BLOB_MASKS}
-TERRAIN_LAST = max(TERRAIN_IDS)
-TILE_CLASSES.update({tile_id: "Solid" for tile_id in TERRAIN_IDS})
+# Tile ids of terrain.png (row-major, 8 columns): the ground looks, then a row of planks.
+TERRAIN_IDS = {terrain_tile_id(mask): mask for mask in BLOB_MASKS}  # 0-46
+PLANK_LEFT = 48
+PLANK_MIDDLE = 49
+PLANK_RIGHT = 50
+PLANK_LONE = 51
 TERRAIN_NAME = "Ground"  # the Wang set and its one colour, as Tiled's Terrain Sets list them
 TERRAIN_COLOR = "#8c6d46"
 PLANKS_NAME = "Planks"
 PLANKS_COLOR = "#c8a165"
-PLANK_MASKS = {ONE_WAY: EAST | WEST, PLANK_LEFT: EAST, PLANK_RIGHT: WEST, PLANK_LONE: 0}
+PLANK_MASKS = {PLANK_MIDDLE: EAST | WEST, PLANK_LEFT: EAST, PLANK_RIGHT: WEST, PLANK_LONE: 0}
+TERRAIN_CLASSES: dict[int, str] = {**{tile_id: "Solid" for tile_id in TERRAIN_IDS},
+                                   **{tile_id: "OneWay" for tile_id in PLANK_MASKS}}
 
 
 def plank_tile_id(mask: int) -> int:
-    """The plank tile for a one-way cell with planks to its ``EAST`` and/or ``WEST``."""
+    """The plank tile of ``terrain.png`` for a one-way cell with planks to its ``EAST``
+    and/or ``WEST``."""
     mask &= EAST | WEST
     return next(tile_id for tile_id, tile_mask in PLANK_MASKS.items() if tile_mask == mask)
 GRASS_SIDE = (  # where grass meets the open side of a top corner: it hangs over the edge
@@ -537,17 +542,17 @@ def draw_one_way(tile: pygame.Surface, open_left: bool = False,
 
 
 def draw_plank_left(tile: pygame.Surface) -> None:
-    """Tile 22: the left end of a row of planks (one-way)."""
+    """Terrain tile 48: the left end of a row of planks (one-way)."""
     draw_one_way(tile, open_left=True)
 
 
 def draw_plank_right(tile: pygame.Surface) -> None:
-    """Tile 23: the right end of a row of planks (one-way)."""
+    """Terrain tile 50: the right end of a row of planks (one-way)."""
     draw_one_way(tile, open_right=True)
 
 
 def draw_plank_lone(tile: pygame.Surface) -> None:
-    """Tile 24: one plank on its own, ended on both sides (one-way)."""
+    """Terrain tile 51: one plank on its own, ended on both sides (one-way)."""
     draw_one_way(tile, open_left=True, open_right=True)
 
 
@@ -844,37 +849,62 @@ TILE_PAINTERS: dict[int, Painter] = {
     BLUE_FLOWER: draw_blue_flower,
     PEBBLES: draw_pebbles,
     TALL_GRASS: draw_tall_grass,
+}
+TERRAIN_PAINTERS: dict[int, Painter] = {
+    **{tile_id: terrain_painter(mask) for tile_id, mask in TERRAIN_IDS.items()},
     PLANK_LEFT: draw_plank_left,
+    PLANK_MIDDLE: draw_one_way,
     PLANK_RIGHT: draw_plank_right,
     PLANK_LONE: draw_plank_lone,
-    **{tile_id: terrain_painter(mask) for tile_id, mask in TERRAIN_IDS.items()
-       if tile_id != LONE_BLOCK},
 }
 
 
-def draw_tileset() -> pygame.Surface:
-    """Return the whole tileset image (TILESET_COLUMNS x TILESET_ROWS tiles)."""
-    sheet = new_surface(TILE * TILESET_COLUMNS, TILE * TILESET_ROWS)
-    for tile_id, painter in TILE_PAINTERS.items():
+def draw_sheet(painters: Mapping[int, Painter], columns: int, rows: int) -> pygame.Surface:
+    """A tileset image of ``columns`` x ``rows`` tiles, each id drawn by its painter."""
+    sheet = new_surface(TILE * columns, TILE * rows)
+    for tile_id, painter in painters.items():
         tile = new_surface(TILE, TILE)
         painter(tile)
-        row, col = divmod(tile_id, TILESET_COLUMNS)
+        row, col = divmod(tile_id, columns)
         sheet.blit(tile, (col * TILE, row * TILE))
     return sheet
 
 
+def draw_tileset() -> pygame.Surface:
+    """Return the tileset image ``tiles.png`` (TILESET_COLUMNS x TILESET_ROWS tiles)."""
+    return draw_sheet(TILE_PAINTERS, TILESET_COLUMNS, TILESET_ROWS)
+
+
+def draw_terrain_tileset() -> pygame.Surface:
+    """Return the terrain tileset image ``terrain.png`` (TERRAIN_COLUMNS x TERRAIN_ROWS)."""
+    return draw_sheet(TERRAIN_PAINTERS, TERRAIN_COLUMNS, TERRAIN_ROWS)
+
+
 def tileset_tsx() -> str:
     """Return the Tiled (1.8) external tileset XML describing tiles.png."""
+    return tsx_text("tiles", TILESET_COLUMNS, TILESET_ROWS, TILE_CLASSES, TILE_HITBOXES, [])
+
+
+def terrain_tsx() -> str:
+    """Return the Tiled (1.8) external tileset XML describing terrain.png, with its
+    terrain sets."""
+    return tsx_text("terrain", TERRAIN_COLUMNS, TERRAIN_ROWS, TERRAIN_CLASSES, {},
+                    wangsets_tsx())
+
+
+def tsx_text(name: str, columns: int, rows: int, classes: Mapping[int, str],
+             hitboxes: Mapping[int, tuple[int, int, int, int]], wangsets: list[str]) -> str:
+    """A Tiled (1.8) external tileset for ``NAME.png``: each tile's class (and hitbox, where
+    it has one), then its terrain sets."""
     lines = [
         '<?xml version="1.0" encoding="UTF-8"?>',
-        f'<tileset version="1.8" tiledversion="1.8.2" name="tiles" tilewidth="{TILE}"'
-        f' tileheight="{TILE}" tilecount="{TILE_COUNT}" columns="{TILESET_COLUMNS}">',
-        f' <image source="tiles.png" width="{TILE * TILESET_COLUMNS}"'
-        f' height="{TILE * TILESET_ROWS}"/>',
+        f'<tileset version="1.8" tiledversion="1.8.2" name="{name}" tilewidth="{TILE}"'
+        f' tileheight="{TILE}" tilecount="{columns * rows}" columns="{columns}">',
+        f' <image source="{name}.png" width="{TILE * columns}" height="{TILE * rows}"/>',
     ]
-    for tile_id in sorted(TILE_CLASSES):
-        tile_class = TILE_CLASSES[tile_id]
-        hitbox = TILE_HITBOXES.get(tile_id)
+    for tile_id in sorted(classes):
+        tile_class = classes[tile_id]
+        hitbox = hitboxes.get(tile_id)
         if hitbox is None:
             lines.append(f' <tile id="{tile_id}" type="{tile_class}"/>')
             continue
@@ -886,7 +916,7 @@ def tileset_tsx() -> str:
             "  </objectgroup>",
             " </tile>",
         ]
-    lines += wangsets_tsx()
+    lines += wangsets
     lines.append("</tileset>")
     return "\n".join(lines) + "\n"
 
@@ -902,8 +932,8 @@ def wang_id(mask: int) -> str:
 
 
 def wangsets_tsx() -> list[str]:
-    """The tileset's terrain sets (Tiled 1.8's ``<wangsets>``): ``Ground``, a *mixed* set, so
-    Tiled's Terrain Brush picks each ground cell's tile from its eight neighbours; and
+    """The terrain tileset's terrain sets (Tiled 1.8's ``<wangsets>``): ``Ground``, a *mixed*
+    set, so Tiled's Terrain Brush picks each ground cell's tile from its eight neighbours; and
     ``Planks``, an *edge* set whose ends close where a row of planks stops. Every tile of the
     first is Solid and of the second OneWay, so painting never changes what collides."""
     top = terrain_tile_id(WEST | SOUTH_WEST | SOUTH | SOUTH_EAST | EAST)
@@ -914,8 +944,8 @@ def wangsets_tsx() -> list[str]:
     lines += [f'   <wangtile tileid="{tile_id}" wangid="{wang_id(mask)}"/>'
               for tile_id, mask in sorted(TERRAIN_IDS.items()) if mask]
     lines.append("  </wangset>")
-    lines += [f'  <wangset name="{PLANKS_NAME}" type="edge" tile="{ONE_WAY}">',
-              f'   <wangcolor name="{PLANKS_NAME}" color="{PLANKS_COLOR}" tile="{ONE_WAY}"'
+    lines += [f'  <wangset name="{PLANKS_NAME}" type="edge" tile="{PLANK_MIDDLE}">',
+              f'   <wangcolor name="{PLANKS_NAME}" color="{PLANKS_COLOR}" tile="{PLANK_MIDDLE}"'
               ' probability="1"/>']
     lines += [f'   <wangtile tileid="{tile_id}" wangid="{wang_id(mask)}"/>'
               for tile_id, mask in PLANK_MASKS.items() if mask]
@@ -1523,6 +1553,7 @@ def place_images() -> dict[str, Callable[[], pygame.Surface]]:
 # Every image this module writes, with the size the game code expects.
 IMAGES: dict[str, tuple[Callable[[], pygame.Surface], tuple[int, int]]] = {
     "tiles.png": (draw_tileset, (TILE * TILESET_COLUMNS, TILE * TILESET_ROWS)),
+    "terrain.png": (draw_terrain_tileset, (TILE * TERRAIN_COLUMNS, TILE * TERRAIN_ROWS)),
     "player.png": (draw_player, (FRAME * PLAYER_FRAME_COUNT, FRAME)),
     "enemy.png": (draw_enemy, (FRAME * ENEMY_FRAME_COUNT, FRAME)),
     "coin.png": (draw_coin, (COIN_SIZE * COIN_FRAME_COUNT, COIN_SIZE)),
@@ -1544,8 +1575,9 @@ def main() -> None:
             raise RuntimeError(f"{name} is {surface.get_size()}, expected {size}")
         pygame.image.save(surface, str(ASSETS / name))
     (ASSETS / "tiles.tsx").write_text(tileset_tsx(), encoding="utf-8")
+    (ASSETS / "terrain.tsx").write_text(terrain_tsx(), encoding="utf-8")
     fonts = write_fonts(ASSETS)
-    print(f"wrote {len(IMAGES) + 1 + len(fonts)} files to {ASSETS} "
+    print(f"wrote {len(IMAGES) + 2 + len(fonts)} files to {ASSETS} "
           "(the credits are in assets/README.md)")
 
 

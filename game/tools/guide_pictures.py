@@ -17,8 +17,8 @@ It (re)writes, in ``assets/guide/``:
 * ``route-first-steps.png``: ``python -m game.levels solve``'s picture of the route it
   found through the first level;
 * ``terrain.png``: one shape of ground twice, on the left as one tile stamped everywhere,
-  on the right painted with the terrain tiles by the rule Tiled's Terrain Brush follows
-  (:func:`game.tools.terrain.repaint_rows`), with a spike pit.
+  on the right painted with the terrain tileset's tiles by the rule Tiled's Terrain Brush
+  follows (:func:`game.tools.terrain.repaint_rows`), with a spike pit.
 
 Every picture is drawn by game code from game data; nothing is drawn by hand.
 """
@@ -35,7 +35,7 @@ import pygame
 from game.levels import FIRST_LEVEL, LEVELS_DIR
 from game.levels.reach import jump_path
 from game.sim.tuning import Tuning
-from game.tools.art import DIRT_FILL, SPIKES
+from game.tools.art import DIRT_FILL, SPIKES, TILE_COUNT
 from game.tools.terrain import repaint_rows
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -49,6 +49,7 @@ POINT = (58, 123, 213)
 PATH = (255, 255, 255)
 PATH_EDGE = (30, 30, 60)
 GROUND_TILE = 0  # ids in assets/tiles.png
+TERRAIN_FIRST_GID = 1 + TILE_COUNT  # assets/terrain.png follows it, as in the shipped maps
 TERRAIN_SHAPE = (  # "#" ground, "^" spikes, for terrain.png
     "..........",
     ".....###..",
@@ -84,16 +85,21 @@ def _save(canvas: pygame.Surface, name: str) -> None:
 def _paint(canvas: pygame.Surface, sheet: pygame.Surface, shape: tuple[str, ...],
            left: int = 0, terrain: bool = True) -> None:
     """Lay ``shape`` (``#`` ground, ``^`` spikes) on ``canvas`` from column ``left``: the
-    ground painted with the terrain tiles, or (``terrain=False``) the dirt tile everywhere."""
+    ground painted with the terrain tileset's tiles, or (``terrain=False``) the dirt tile
+    everywhere."""
+    terrain_sheet = pygame.image.load(str(ROOT / "assets" / "terrain.png"))
     gids = [[1 + DIRT_FILL if char == "#" else 0 for char in row] for row in shape]
     if terrain:
-        gids = repaint_rows(gids, 1)
+        gids = repaint_rows(gids, 1, TERRAIN_FIRST_GID)
     for row, line in enumerate(gids):
         for col, gid in enumerate(line):
+            at = ((left + col) * TILE, row * TILE)
             if shape[row][col] == "^":
-                canvas.blit(_tile(sheet, SPIKES), ((left + col) * TILE, row * TILE))
+                canvas.blit(_tile(sheet, SPIKES), at)
+            elif gid >= TERRAIN_FIRST_GID:
+                canvas.blit(_tile(terrain_sheet, gid - TERRAIN_FIRST_GID), at)
             elif gid:
-                canvas.blit(_tile(sheet, gid - 1), ((left + col) * TILE, row * TILE))
+                canvas.blit(_tile(sheet, gid - 1), at)
 
 
 def terrain(sheet: pygame.Surface) -> None:
