@@ -45,16 +45,19 @@ def tile_image(sheet: pygame.Surface, tile_id: int) -> pygame.Surface:
 
 
 def hazard_distances() -> dict[str, float]:
-    """For each place, the least distance between a hazard's mean colour and a safe tile's."""
-    sheet = art.draw_tileset()
-    hazards = [i for i, kind in art.TILE_CLASSES.items() if kind == "Hazard"]
-    safe = [i for i, kind in art.TILE_CLASSES.items() if kind in ("Solid", "OneWay")]
+    """For each place, the least distance between a hazard's mean colour and a safe tile's,
+    the safe tiles of both tilesets (``tiles.png`` and the terrain's ``terrain.png``)."""
+    sheet, terrain = art.draw_tileset(), art.draw_terrain_tileset()
+    hazards = [tile_image(sheet, i) for i, kind in art.TILE_CLASSES.items() if kind == "Hazard"]
+    safe = [tile_image(sheet, i) for i, kind in art.TILE_CLASSES.items()
+            if kind in ("Solid", "OneWay")]
+    safe += [tile_image(terrain, i) for i in art.TERRAIN_CLASSES]
     least = {}
     for name, place in PLACES.items():
         swap = place.ground_swap()
-        means = {i: mean_colour(recolour(tile_image(sheet, i).copy(), swap))
-                 for i in hazards + safe}
-        least[name] = min(math.dist(means[h], means[s]) for h in hazards for s in safe)
+        hazard_means = [mean_colour(recolour(tile.copy(), swap)) for tile in hazards]
+        safe_means = [mean_colour(recolour(tile.copy(), swap)) for tile in safe]
+        least[name] = min(math.dist(h, s) for h in hazard_means for s in safe_means)
     return least
 
 
