@@ -53,6 +53,7 @@ Cell = tuple[int, int]
 SLACK_PX = 0.5  # rounding room on every bound
 FALL_DEPTH_PX = 24.0  # below the launch by this much, the fill switches to falling
 MAX_AIR_TICKS = 10_000
+RIDE_ROW = -(10**9)  # steps_to_exit's nodes for a platform ride sit in this row
 
 
 def jump_rise(tuning: Tuning) -> list[float]:
@@ -291,6 +292,7 @@ class _JumpFill(_Fill):
         self.envelope = envelope
         self.launch_y = launches  # cell -> the highest feet height resting in it
         self.launched: set[Cell] = set()
+        self.moves: dict[Cell, set[Cell]] = {}  # every step from cell to cell the fill made
         self.falling: set[tuple[int, int, bool]] = set()
         self.fall_queue: deque[tuple[int, int, bool]] = deque()
         self.platform_cells = self._platform_groups(level, body)
@@ -384,13 +386,16 @@ class _JumpFill(_Fill):
             for dc in (-1, 0, 1):
                 for dr in (-1, 0, 1):
                     near = (col + dc, row + dr)
-                    if (dc == 0 and dr == 0) or near in local or not self.open(near):
+                    if (dc == 0 and dr == 0) or not self.open(near):
                         continue
                     c_lo, c_hi = near[0] * tile_w, (near[0] + 1) * tile_w
                     distance = max(0.0, c_lo - x_hi, x_lo - c_hi)
                     lowest_y = (near[1] + 1) * tile_h  # the cell's bottom: the least rise
                     if lowest_y <= feet_y - min(max_rise, env.rise_at(distance)):
                         continue  # wholly above what a jump reaches at that distance
+                    self.moves.setdefault((col, row), set()).add(near)
+                    if near in local:
+                        continue
                     local.add(near)
                     depth = near[1] * tile_h - feet_y  # how far below take-off, at least
                     if depth >= FALL_DEPTH_PX:
@@ -418,12 +423,15 @@ class _JumpFill(_Fill):
         if not stepped:
             moves += [(col + dc, row, True) for dc in range(-sideways, sideways + 1) if dc]
         for near in moves:
-            if near in self.falling or not self.open((near[0], near[1])):
+            if not self.open((near[0], near[1])):
                 continue
             if abs(near[0] - col) > 1:  # a wider step must pass the cells between
                 between = range(min(col, near[0]) + 1, max(col, near[0]))
                 if any(not self.open((c, near[1])) for c in between):
                     continue
+            self.moves.setdefault((col, row), set()).add((near[0], near[1]))
+            if near in self.falling:
+                continue
             self.falling.add(near)
             self.fall_queue.append(near)
 
@@ -437,6 +445,36 @@ def _along(legs: Iterable[tuple[tuple[float, float], tuple[float, float]]],
         count = max(1, math.ceil(math.dist((x0, y0), (x1, y1)) / max(step, 1e-9)))
         for i in range(1, count):
             yield x0 + (x1 - x0) * i / count, y0 + (y1 - y0) * i / count
+
+
+def steps_to_exit(world: World) -> dict[Cell, int] | None:
+    """For every cell the fill reached, the fewest of its steps (cell to cell, as the fill
+    moved) to a cell where the player touches an Exit; a cell from which no step leads
+    there is left out. None when the tuning gives no bound. A guide for the search: a place
+    left out is one from which, by the proof above, no route can go on to an Exit."""
+    envelope = envelope_of(world.level, world.tuning)
+    if envelope is None:
+        return None
+    fill = _JumpFill(world.level, envelope, world.spawn)
+    reach = _flood(world, fill)
+    back: dict[Cell, list[Cell]] = {}
+    for cell, nears in fill.moves.items():
+        for near in nears:
+            back.setdefault(near, []).append(cell)
+    for number, group in enumerate(fill.platform_cells):  # a ride: any of its cells to any
+        ride = (-1 - number, RIDE_ROW)  # a node standing for the whole ride
+        back[ride] = sorted(group & reach.cells)
+        for cell in back[ride]:
+            back.setdefault(cell, []).append(ride)
+    steps = {cell: 0 for cell in reach.targets}
+    queue = deque(sorted(reach.targets))
+    while queue:
+        cell = queue.popleft()
+        for before in back.get(cell, ()):
+            if before not in steps:
+                steps[before] = steps[cell] + 1
+                queue.append(before)
+    return steps
 
 
 def reachable(world: World) -> Reach | None:

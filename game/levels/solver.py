@@ -56,6 +56,8 @@ from pathlib import Path
 
 from game.collision.aabb import Box
 from game.levels.loader import load_level
+from game.levels.reachable import steps_to_exit
+from game.levels.search_key import StateKey, route_box, state_key
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, Actions, InputEvent, Recorder
 from game.sim.level import Level
@@ -70,15 +72,13 @@ CHOICES: tuple[Actions, ...] = (
     frozenset(), frozenset({J}), frozenset({D, J}))
 DROP = CHOICES[-1]  # only tried while standing on a one-way floor
 PIT_PENALTY_TILES = 6.0  # falling with no floor below costs as much as this much distance
-SAME_PLACE_PX = 4.0  # states closer than this (and alike in speed) count as one
-SAME_SPEED_PX_S = 30.0
-PLATFORM_PHASE_PX = 16.0  # moving platforms this close along their paths count as alike
 STALL_MOVES = 60  # a beam that gets no closer for this many moves (plus a platform's
 #                   round trip) is given up for a wider one
 UNREACHABLE = math.inf
 BEST_FIRST_WEIGHT = 3.0  # how much more a tile of distance counts than a tile's worth of time
 DEATH_PENALTY_TILES = 20.0  # losing a life costs as much as this much distance
-DEFAULT_BUDGET = 60_000  # moves the search may try on one map (each move is 6 ticks)
+FEET_PX = 0.5  # the search scores the cell just above the middle of the feet
+DEFAULT_BUDGET = 50_000  # moves the search may try on one map (each move is 6 ticks)
 
 
 @dataclass(frozen=True)
@@ -87,7 +87,7 @@ class Effort:
 
     budget: int = DEFAULT_BUDGET  # moves the whole search may try: the bound on its work
     greedy_moves: int = 14_000  # of those, the most the best-first search may try first
-    widths: tuple[int, ...] = (12, 24, 48)
+    widths: tuple[int, ...] = (6, 12, 24)
     seconds: float | None = None  # an extra wall-clock limit (None: none, the default)
 
 
@@ -183,10 +183,11 @@ class _Search:
         self.level = level
         self.effort = effort
         self.world = World(level)
-        self.steps = distances_to_exit(level)
+        self.steps = steps_to_exit(World(level)) or distances_to_exit(level)
         self.start = Snapshot.of(self.world)
         self.goal_cells = [cell for cell, steps in self.steps.items() if steps == 0]
         self.lives = self.world.tuning.start_lives
+        self.routes = [route_box(platform) for platform in self.world.platforms]
         self.moves_tried = 0
         self.states = 0
         self.exhausted = False  # a beam kept every state it met: wider ones cannot help
@@ -204,8 +205,8 @@ class _Search:
         """How far the player still is from an Exit, in tiles (lower is better)."""
         world, grid = self.world, self.level.grid
         box = world.player.box
-        x, y = box.center
-        cell = (math.floor(x / grid.tile_w), math.floor(y / grid.tile_h))
+        cell = (math.floor(box.center[0] / grid.tile_w),
+                math.floor((box.bottom - FEET_PX) / grid.tile_h))
         steps = self.steps.get(cell)
         if steps is None:
             return UNREACHABLE
@@ -215,18 +216,9 @@ class _Search:
                 return steps + self.pit_penalty
         return float(steps)
 
-    def key(self, choice: Actions) -> tuple[object, ...]:
-        """What makes two states the same for the search (holding jump matters: a new
-        jump needs a fresh press)."""
-        player = self.world.player
-        phases = tuple(
-            math.floor(p.travelled_px / PLATFORM_PHASE_PX)
-            % max(1, math.floor(2 * p.spec.path.length / PLATFORM_PHASE_PX))
-            for p in self.world.platforms)
-        return (round(player.box.x / SAME_PLACE_PX), round(player.box.y / SAME_PLACE_PX),
-                round(player.vx / SAME_SPEED_PX_S), round(player.vy / SAME_SPEED_PX_S),
-                player.on_ground, player.dropping_through, J in choice,
-                phases, len(self.world.enemies), self.world.spawn)
+    def key(self, choice: Actions) -> StateKey:
+        """What makes two states the same for the search (:mod:`game.levels.search_key`)."""
+        return state_key(self.world, choice, self.routes)
 
     def out_of_time(self) -> bool:
         """The search must stop: its budget of moves is spent, or its seconds are up."""
@@ -253,7 +245,7 @@ class _Search:
         return None
 
     def children(self, snapshot: Snapshot, node: Node | None, ticks: int,
-                 seen: set[tuple[object, ...]]) -> Iterator[tuple[float, Snapshot, Node]]:
+                 seen: set[StateKey]) -> Iterator[tuple[float, Snapshot, Node]]:
         """Every new state one move from ``snapshot``; stops early at an Exit (its Node
         comes with an infinitely good score of minus infinity)."""
         for choice in CHOICES:
@@ -276,8 +268,10 @@ class _Search:
             if key in seen:
                 continue
             seen.add(key)
-            self.states += 1
             score = self.score() + lost * DEATH_PENALTY_TILES
+            if score == UNREACHABLE:
+                continue  # no way on to an Exit from here, by the proof of reachable
+            self.states += 1
             if score < self.best[0]:
                 self.best = (score, self.world.player.box, child)
             yield score, Snapshot.of(self.world), child
@@ -287,7 +281,7 @@ class _Search:
         (weighted A*): quick on levels that need no waiting."""
         grid, tuning = self.level.grid, self.world.tuning
         tiles_per_tick = tuning.run_speed_px_s * tuning.tick_s / grid.tile_w
-        seen: set[tuple[object, ...]] = set()
+        seen: set[StateKey] = set()
         queue: list[tuple[float, int, Snapshot, Node | None]] = [(0.0, 0, self.start, None)]
         order = 0
         while queue and self.moves_tried < max_moves:
@@ -307,7 +301,7 @@ class _Search:
         """One beam search of ``width``; the Node that reached an Exit, or None."""
         self.pit_penalty = PIT_PENALTY_TILES  # a narrow beam must not fill up with falls
         beam: list[tuple[Snapshot, Node | None]] = [(self.start, None)]
-        seen: set[tuple[object, ...]] = set()
+        seen: set[StateKey] = set()
         closest, since_closer = UNREACHABLE, 0
         dropped = False
         move = 0
