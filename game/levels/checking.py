@@ -78,8 +78,8 @@ class MapReport:
                                      where, message, fix))
 
     def as_json(self) -> dict[str, object]:
-        verdict = ("bad" if self.bad else "not searched" if self.verdict is None
-                   else self.verdict.value)
+        verdict = (self.verdict.value if self.verdict is not None
+                   else "bad" if self.bad else "not searched")
         return {"path": str(self.path), "verdict": verdict,
                 "findings": [f.as_json() for f in self.findings]}
 
