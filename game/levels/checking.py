@@ -19,6 +19,7 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from game.levels.designer_checks import designer_findings
 from game.levels.errors import LevelError, LevelWarning
 from game.levels.loader import check_level, load_level
 from game.levels.solver import Effort
@@ -122,6 +123,14 @@ def check_map(path: Path, options: Options) -> MapReport:
         if findings.errors:
             return report
         level = load_level(path)
+        extra = designer_findings(path, level)
+        report.findings = [f for f in report.findings  # the loader's warning, made an error
+                           if not (f.severity == "warning" and "next_level" in f.where and any(
+                               e[1] == f.where for e in extra))]
+        for severity, where, message, fix in extra:
+            report.add(severity, where, message, fix)
+        if report.bad:
+            return report
         tuning = Tuning().with_map_properties(level.properties)
         if tuning != Tuning():
             report.tuning = tuning
