@@ -58,3 +58,24 @@ def test_an_exit_on_a_hidden_layer_is_warned_about_in_tiles_words(tmp_path: Path
     (line,) = [t for t in lines(path) if "hidden" in t]
     assert "object #20 'first exit': warning: this Exit is on the hidden layer 'old ideas' " \
            "(its eye is off in the Layers panel), yet the game plays it" in line
+
+
+def test_a_wall_painted_on_a_decoration_layer_is_named_when_it_closes_the_way(
+        tmp_path: Path) -> None:
+    path = write_tmx(tmp_path, ["################", *OPEN[1:]])  # a cave: a ceiling
+    cols, rows = 16, 4
+    wall = [[1 if col == 9 and 0 < row < 3 else 0 for col in range(cols)]
+            for row in range(rows)]
+    data = ",\n".join(",".join(map(str, row)) for row in wall)
+    layer = (f' <layer id="7" name="background (no collision)" width="{cols}" '
+             f'height="{rows}">\n  <data encoding="csv">\n{data}\n</data>\n </layer>\n')
+    text = path.read_text(encoding="utf-8").replace(' <objectgroup', layer + ' <objectgroup')
+    path.write_text(text, encoding="utf-8")
+    (line,) = [t for t in lines_of(check_map(path, Options())) if "impossible" in t]
+    assert "no open path joins the spawn and an Exit" in line
+    assert "without the Solid tiles of layer 'background (no collision)' there would be a " \
+           "way" in line
+
+
+def lines_of(report: object) -> list[str]:
+    return [f.text for f in getattr(report, "findings", [])]

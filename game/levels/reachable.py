@@ -273,10 +273,13 @@ class _Fill:
         return set(self.seen)
 
 
-def open_path(world: World) -> Reach:
+def open_path(world: World, opened: frozenset[Cell] = frozenset()) -> Reach:
     """Cells joined to the spawn by open cells (4 neighbours), gravity ignored; the sky above
-    the map is open along its whole width."""
-    return _flood(world, _Fill(world.level, sky_rows=2))
+    the map is open along its whole width. ``opened``: closed cells to count as open (to ask
+    whether some tiles are what closes the way)."""
+    fill = _Fill(world.level, sky_rows=2)
+    fill.closed -= opened
+    return _flood(world, fill)
 
 
 class _JumpFill(_Fill):

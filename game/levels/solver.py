@@ -15,12 +15,14 @@ What it teaches: a **beam search** over a deterministic simulation.
 * **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
   state, step the world, keep the child's state.
 * **A layer per move.** All children of the current beam are scored by how far they still
-  are from an Exit, and only the best :attr:`Effort.widths` survive. A loss of a life ends
-  a branch. Two states in the same place, at the same speed, with the moving platforms at
-  the same point of their paths, are the same state: only the first is kept, ever, so the
-  beam cannot go round in circles.
-* **The score** is the walking distance to the nearest Exit through open cells (a flood
-  fill from the Exit over the tile grid). The beams add a penalty for falling with no
+  are from an Exit, and only the best :attr:`Effort.widths` survive. Two states with the
+  same key (:mod:`game.levels.search_key`: about the same place and speed, the nearby
+  moving platforms at the same point of their paths) are the same state: only the first is
+  kept, ever, so the beam cannot go round in circles.
+* **The score** is the number of steps from the player's cell to an Exit along the moves
+  of the reach proof (:func:`game.levels.reachable.steps_to_exit`): it knows that a ledge
+  too high must be climbed from elsewhere, and a state from which no step leads on to an
+  Exit (at the bottom of a pit) is dropped. The beams add a penalty for falling with no
   floor below: standing at the edge of a pit waiting for a platform is better than jumping
   into it.
 * **Best first, then beams.** First a best-first search always carries on from the state
@@ -29,8 +31,8 @@ What it teaches: a **beam search** over a deterministic simulation.
   a level with moving platforms the beams go first: waiting for a platform never improves
   the score, so a best-first search would never wait.
 * **Widening.** A narrow beam is fast but can throw away the one state that needed to wait.
-  When a beam dies out, or stops getting closer for a while, the search starts again wider.
-
+  When a beam dies out, or stops getting closer for a while, the search starts again wider,
+  doubling past the last of :attr:`Effort.widths` until the budget is spent.
 * **Losing a life** is allowed while lives remain (the game lets a player finish after one):
   the branch carries on from the respawn place, counting the life lost, behind a penalty.
 

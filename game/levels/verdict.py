@@ -25,6 +25,7 @@ from pathlib import Path
 
 from game.levels.reachable import Cell, Reach, open_path, reachable
 from game.levels.solver import Effort, Solution, solve
+from game.levels.wall_layers import closed_cells_by_layer
 from game.sim.campaign import Campaign
 from game.sim.inputs import InputScript
 from game.sim.level import Level
@@ -62,11 +63,16 @@ def prove_impossible(level: Level) -> Verdict | None:
         return None
     sealed = open_path(world)
     if not sealed.touches_exit:
+        culprit = _closing_layer(world)
+        blame = (f"; without the Solid tiles of layer '{culprit}' there would be a way"
+                 if culprit is not None else "")
+        fix = (f"clear the Solid tiles of layer '{culprit}' in the way (or give them another "
+               "class)" if culprit is not None else
+               "open a way through the Solid tiles between here and the Exit")
         return Verdict(Kind.IMPOSSIBLE, sealed.nearest_to_exit(),
                        "impossible: no open path joins the spawn and an Exit; Solid tiles "
-                       "close every way, and this is the nearest open place to an Exit",
-                       "open a way through the Solid tiles between here and the Exit",
-                       reach=sealed)
+                       f"close every way{blame}; this is the nearest open place to an Exit",
+                       fix, reach=sealed)
     reach = reachable(world)
     if reach is not None and not reach.touches_exit:
         return Verdict(Kind.IMPOSSIBLE, reach.nearest_to_exit(),
@@ -76,6 +82,22 @@ def prove_impossible(level: Level) -> Verdict | None:
                        "reach in the summary), or move the Exit",
                        reach=reach)
     return None
+
+
+def _closing_layer(world: World) -> str | None:
+    """The tile layer whose Solid tiles alone close the way, if taking them away opens it
+    (of several, the one with the fewest such tiles: a stray wall, not the whole ground)."""
+    layers = closed_cells_by_layer(world.level.path) if world.level.path.is_file() else []
+    openers: list[tuple[int, int, str]] = []
+    for number, (name, cells) in enumerate(layers):
+        others: set[Cell] = set()
+        for other, (_, other_cells) in enumerate(layers):
+            if other != number:
+                others |= other_cells
+        own = frozenset(cells - others)
+        if own and open_path(world, own).touches_exit:
+            openers.append((len(own), number, name))
+    return min(openers)[2] if openers else None
 
 
 def judge(level: Level, effort: Effort, command: str = "python -m game.levels") -> Verdict:
