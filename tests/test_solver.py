@@ -119,9 +119,13 @@ def test_a_proof_that_does_not_win_is_not_taken_as_solved(tmp_path: Path) -> Non
 
 
 def walled_in_copy(folder: Path) -> Path:
-    """The first level with solid tiles all round its Exit."""
+    """The first level with solid tiles all round its Exit (and no next level)."""
     tree = ET.parse(FIRST)
     root = tree.getroot()
+    for properties in root.findall("properties"):  # the next level is not copied with it
+        for prop in properties.findall("property"):
+            if prop.get("name") == "next_level":
+                properties.remove(prop)
     cols = int(root.get("width", "0"))
     exit_object = next(o for o in root.iter("object") if o.get("type") == "Exit")
     col = int(float(exit_object.get("x", "0"))) // 16
