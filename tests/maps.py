@@ -7,12 +7,14 @@ of a 12x14 hitbox at the cell's corner), ``C`` coin (8x8 at the cell's corner), 
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import TileGrid
 from game.sim.level import CoinSpec, EnemySpec, Level
+from game.sim.platforms import PlatformSpec
 from game.sim.world import Measure
 
 TILE = 16
@@ -101,3 +103,22 @@ def write_tmx(folder: Path, rows: list[str], name: str = "level.tmx",
     path = folder / name
     path.write_text(text, encoding="utf-8")
     return path
+
+
+def level_from_boxes(cols: int, rows: int, solids: list[Box], spawn: Box, exits: list[Box],
+                     one_ways: tuple[Box, ...] = (), platforms: tuple[PlatformSpec, ...] = (),
+                     checkpoints: tuple[Box, ...] = ()) -> Level:
+    """A level whose solid and one-way ground is given in pixels (cut into the cells it
+    covers), for edges that fall between tile lines: a gap of 76 px, a ledge 44 px high."""
+    grid = TileGrid(cols, rows, TILE, TILE)
+    for kind, boxes in ((TileKind.SOLID, solids), (TileKind.ONE_WAY, one_ways)):
+        for box in boxes:
+            for col in range(math.floor(box.left / TILE), math.ceil(box.right / TILE)):
+                for row in range(math.floor(box.top / TILE), math.ceil(box.bottom / TILE)):
+                    x0, x1 = max(box.left, col * TILE), min(box.right, (col + 1) * TILE)
+                    y0, y1 = max(box.top, row * TILE), min(box.bottom, (row + 1) * TILE)
+                    if x1 > x0 and y1 > y0:
+                        grid.put(col, row, TileShape(Box(x0, y0, x1 - x0, y1 - y0), kind,
+                                                     col, row))
+    return Level(path=Path("test.tmx"), grid=grid, spawn=spawn, exits=tuple(exits),
+                 platforms=platforms, checkpoints=checkpoints)

@@ -89,3 +89,13 @@ def test_a_wheel_installed_in_a_fresh_environment_plays_level_one_from_any_folde
     checked = run([bin_dir / "tile-hopper-levels", "check", "--no-solve",
                    Path(report["level"]).parent], elsewhere, env)  # tests/test_solver.py solves
     assert "all playable" in checked.stdout
+
+
+def test_the_build_carries_the_showcase_maps_and_the_tiled_extension() -> None:
+    config = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
+    mapped = config["tool"]["setuptools"]["package-dir"]
+    data = config["tool"]["setuptools"]["package-data"]
+    assert mapped["game.data.levels.showcase"] == "levels/showcase"
+    assert mapped["game.data.levels.extensions"] == "levels/extensions"
+    assert "*.tmx" in data["game.data.levels.showcase"]
+    assert "*.js" in data["game.data.levels.extensions"]

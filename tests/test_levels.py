@@ -12,7 +12,7 @@ from game.collision.aabb import Box
 from game.collision.shapes import TileKind
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.levels.loader import check_level
-from game.levels.reach import measure_reach
+from game.levels.reach import DEFAULT_LIMITS, measure_limits, measure_reach
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, InputScript
 from game.sim.tuning import Tuning
@@ -40,7 +40,7 @@ def test_the_checker_passes_every_shipped_level() -> None:
     assert result.returncode == 0, result.stdout + result.stderr
     assert result.stdout.splitlines() == [
         f"checked {len(SHIPPED)} map(s): all playable; the player jumps 2.8 tiles high and "
-        "3.6 tiles across at a run (16 px tiles)"]
+        "3.6 tiles across at a run (16 px tiles); " + DEFAULT_LIMITS.describe()]
 
 
 def test_the_checker_gives_the_reach_of_a_map_that_sets_its_own_physics() -> None:
@@ -48,12 +48,14 @@ def test_the_checker_gives_the_reach_of_a_map_that_sets_its_own_physics() -> Non
     result = subprocess.run([sys.executable, "-m", "game.levels", "check", "--no-solve",
                              str(fast_fall), str(FIRST_LEVEL)],
                             capture_output=True, text=True, timeout=60, check=False)
-    own = measure_reach(Tuning().with_map_properties(load_level(fast_fall).properties))
+    own_tuning = Tuning().with_map_properties(load_level(fast_fall).properties)
+    own = measure_reach(own_tuning)
     assert own.height_px < measure_reach(Tuning()).height_px / 100
     assert result.stdout.splitlines() == [
         "checked 2 map(s): all playable; with the default physics the player jumps 2.8 tiles "
-        "high and 3.6 tiles across at a run (16 px tiles); on fast-fall.tmx, with its own "
-        f"physics, it {own.describe(16)}"]
+        f"high and 3.6 tiles across at a run (16 px tiles); {DEFAULT_LIMITS.describe()}; on "
+        f"fast-fall.tmx, with its own physics, it {own.describe(16)}; "
+        f"{measure_limits(own_tuning).describe()}"]
 
 
 def test_the_checker_names_the_file_and_the_fix_for_a_bad_map(tmp_path: Path) -> None:

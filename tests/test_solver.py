@@ -1,8 +1,11 @@
-"""The solver: snapshots restore a world exactly, every shipped level is solved (and its
-winning script is the one the solver writes), and a walled-in Exit is refused by check."""
+"""The solver and the checker's verdicts on real maps: snapshots restore a world exactly, every
+shipped level is solved within the default budget by a route that replays, every committed
+winning script is accepted as proof, a walled-in Exit is proven impossible, a search out of
+budget or time is "not decided" with its own exit status, and the reach is measured."""
 
 from __future__ import annotations
 
+import json
 import re
 import shutil
 import subprocess
@@ -13,9 +16,12 @@ from pathlib import Path
 import pytest
 
 from game.levels import LEVELS_DIR, load_level
-from game.levels.reach import measure_reach
+from game.levels.__main__ import check, command_name
+from game.levels.checking import Options, check_map
+from game.levels.reach import DEFAULT_LIMITS, Limits, measure_limits, measure_reach
 from game.levels.route_picture import PLATFORM, draw_route
-from game.levels.solver import Effort, replay, solve
+from game.levels.solver import DEFAULT_BUDGET, Effort, replay, solve
+from game.levels.verdict import Kind
 from game.sim.inputs import Action, InputScript
 from game.sim.snapshot import Snapshot
 from game.sim.tuning import Tuning
@@ -89,22 +95,37 @@ def test_stepping_on_after_a_snapshot_does_not_change_it() -> None:
     assert state(world) == before
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
-def test_the_solver_finds_the_committed_winning_script(level: Path) -> None:
-    loaded = load_level(level)
-    solution = solve(loaded)
-    assert solution.found
-    committed = (SCRIPTS / f"{level.stem}.txt").read_text(encoding="utf-8")
-    assert solution.script() == committed
-    script = InputScript.load(SCRIPTS / f"{level.stem}.txt")
-    won, _ = replay(level, [script.held_at(t) for t in range(solution.exit_tick)])
+def test_the_solver_solves_every_shipped_level_within_the_default_budget(level: Path) -> None:
+    solution = solve(load_level(level))
+    assert solution.found and solution.moves_tried < DEFAULT_BUDGET
+    won, _ = replay(level, solution.held)
     assert won
 
 
+@pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
+def test_check_accepts_each_committed_winning_script_as_proof(level: Path) -> None:
+    report = check_map(level, Options(proof=SCRIPTS / f"{level.stem}.txt"))
+    assert report.verdict is Kind.SOLVED and not report.bad, report.findings
+
+
+def test_a_proof_that_does_not_win_is_not_taken_as_solved(tmp_path: Path) -> None:
+    script = tmp_path / "short.txt"
+    script.write_text("0 +right\n30 -right\n", encoding="utf-8")
+    report = check_map(FIRST, Options(proof=script))
+    assert report.verdict is Kind.UNDECIDED
+    assert any("does not finish the level" in f.text for f in report.findings)
+
+
 def walled_in_copy(folder: Path) -> Path:
-    """The first level with solid tiles all round its Exit."""
+    """The first level with solid tiles all round its Exit (and no next level)."""
     tree = ET.parse(FIRST)
     root = tree.getroot()
+    for properties in root.findall("properties"):  # the next level is not copied with it
+        for prop in properties.findall("property"):
+            if prop.get("name") == "next_level":
+                properties.remove(prop)
     cols = int(root.get("width", "0"))
     exit_object = next(o for o in root.iter("object") if o.get("type") == "Exit")
     col = int(float(exit_object.get("x", "0"))) // 16
@@ -126,17 +147,18 @@ def walled_in_copy(folder: Path) -> Path:
     return path
 
 
-def test_check_refuses_a_level_whose_exit_is_walled_in_naming_the_furthest_place(
+def test_check_proves_a_level_whose_exit_is_walled_in_impossible_naming_the_place(
         tmp_path: Path) -> None:
     level = walled_in_copy(tmp_path)
     result = subprocess.run([sys.executable, "-m", "game.levels", "check", str(level)],
                             capture_output=True, text=True, timeout=600, check=False, cwd=ROOT)
     assert result.returncode == 1, result.stdout + result.stderr
-    line = next(line for line in result.stdout.splitlines() if "not reached" in line)
+    line = next(line for line in result.stdout.splitlines() if "impossible" in line)
     assert line.startswith(f"{level}: tile (")
-    assert "the exit was not reached from the spawn" in line and " — " in line
+    assert "no open path joins the spawn and an Exit" in line and " — " in line
     col = int(line.split("tile (")[1].split(",")[0])
-    assert 70 <= col < 84  # it got most of the way: the wall is at column 82
+    assert 70 <= col < 84  # beside the wall round the Exit, at column 82
+    assert "0 solved, 1 impossible" in result.stdout.splitlines()[-1]
 
 
 def test_check_can_skip_the_search(tmp_path: Path) -> None:
@@ -169,7 +191,7 @@ def test_solve_says_how_far_it_got_when_the_exit_is_walled_in(tmp_path: Path) ->
                              "--out", str(tmp_path / "none.txt")],
                             capture_output=True, text=True, timeout=600, check=False, cwd=ROOT)
     assert result.returncode == 1
-    assert result.stderr.startswith(f"{level}: tile (") and "furthest place" in result.stderr
+    assert result.stderr.startswith(f"{level}: tile (") and "impossible" in result.stderr
     assert not (tmp_path / "none.txt").exists()
 
 
@@ -185,23 +207,69 @@ def test_the_reach_is_measured_from_the_tuning() -> None:
     assert higher.height_px > default.height_px and higher.distance_px > default.distance_px
 
 
+def test_the_kept_limits_are_what_the_game_measures() -> None:
+    """The highest ledge and the widest gaps the checker and the guide quote, played out."""
+    assert measure_limits(Tuning()) == DEFAULT_LIMITS == Limits(44, 68, 76)
+
+
 def test_the_guide_quotes_the_measured_reach_and_its_pictures_exist() -> None:
     guide = (LEVELS_DIR / "README.md").read_text(encoding="utf-8")
     reach = measure_reach(Tuning())
     assert (f"lifts the feet\n{reach.height_px / 16:.1f} tiles ({reach.height_px:.0f} px) and "
             f"carries them {reach.distance_px / 16:.1f} tiles ({reach.distance_px:.0f} px)"
             in guide)
+    limits = DEFAULT_LIMITS
+    for figure in (f"highest ledge the player lands on is **{limits.ledge_px} px**",
+                   f"**{limits.gap_px} px** with a running jump",
+                   f"**{limits.coyote_gap_px} px** with a coyote jump"):
+        assert figure in " ".join(guide.split()), figure
     pictures = re.findall(r"\]\((\.\./assets/guide/[^)]+)\)", guide)
     assert len(pictures) >= 5
     assert all((LEVELS_DIR / picture).is_file() for picture in pictures)
 
 
-def test_check_only_warns_when_the_search_runs_out_of_time(tmp_path: Path) -> None:
+def test_check_says_not_decided_with_its_own_exit_status_when_the_budget_runs_out() -> None:
+    result = subprocess.run([sys.executable, "-m", "game.levels", "check", "--budget", "20",
+                             str(FIRST)], capture_output=True, text=True, timeout=120,
+                            check=False, cwd=ROOT)
+    assert result.returncode == 3, result.stdout + result.stderr
+    assert "warning: not decided: the search found no route within its budget of 20 moves" \
+        in result.stdout
+    assert "--budget 80" in result.stdout
+    summary = result.stdout.splitlines()[-1]
+    assert "0 solved, 1 not decided" in summary and "none bad" in summary
+    assert "all playable" not in summary  # a search that found nothing proves nothing
+
+
+def test_check_with_seconds_still_stops_and_is_not_decided() -> None:
     result = subprocess.run([sys.executable, "-m", "game.levels", "check", "--solve-seconds",
                              "0.01", str(FIRST)], capture_output=True, text=True, timeout=120,
                             check=False, cwd=ROOT)
-    assert result.returncode == 0, result.stdout + result.stderr
-    assert "warning: no route to an Exit was found within 0.01 s" in result.stdout
+    assert result.returncode == 3, result.stdout + result.stderr
+    assert "not decided: the search found no route within its 0.01 s" in result.stdout
+
+
+def test_check_with_no_path_checks_the_shipped_campaign_and_can_speak_json(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    assert check([], Options(solve=False), "json") == 0
+    document = json.loads(capsys.readouterr().out)
+    assert [Path(m["path"]).name for m in document["maps"]] == [p.name for p in SHIPPED]
+    assert document["status"] == 0 and document["summary"].startswith("checked 6 map(s)")
+
+
+def test_json_findings_carry_the_object_and_the_tile(tmp_path: Path,
+                                                     capsys: pytest.CaptureFixture[str]) -> None:
+    level = walled_in_copy(tmp_path)
+    assert check([level], Options(), "json") == 1
+    (found,) = json.loads(capsys.readouterr().out)["maps"]
+    assert found["verdict"] == "impossible"
+    (finding,) = [f for f in found["findings"] if f["severity"] == "error"]
+    assert finding["tile"][0] in range(70, 84) and finding["object_id"] is None
+
+
+def test_usage_names_the_command_that_was_typed() -> None:
+    assert command_name("/home/me/.venv/bin/tile-hopper-levels") == "tile-hopper-levels"
+    assert command_name("/src/game/levels/__main__.py") == "python -m game.levels"
 
 
 def test_the_route_picture_shows_each_moving_platform_and_its_route() -> None:
@@ -215,3 +283,28 @@ def test_the_route_picture_shows_each_moving_platform_and_its_route() -> None:
         middle = (round((x0 + x1) / 2 + platform.width_px / 2),
                   round((y0 + y1) / 2 + platform.height_px / 2))
         assert picture.get_at(middle)[:3] == PLATFORM[:3]                 # its route
+
+
+EXTENSION = LEVELS_DIR / "extensions" / "tile-hopper-check.js"
+
+
+def test_the_tiled_extension_parses() -> None:
+    node = shutil.which("node")
+    if node is None:
+        pytest.skip("node is not installed")
+    result = subprocess.run([node, "--check", str(EXTENSION)], capture_output=True, text=True,
+                            timeout=60, check=False)
+    assert result.returncode == 0, result.stderr
+
+
+def test_the_tiled_extension_reads_what_the_checker_writes(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    script = EXTENSION.read_text(encoding="utf-8")
+    assert '"check", "--format",\n                                               "json"' in script
+    level = walled_in_copy(tmp_path)
+    check([level], Options(solve=False), "json")
+    document = json.loads(capsys.readouterr().out)
+    for key in ("maps", "summary"):
+        assert key in document and f"report.{key}" in script
+    for key in ("findings", "severity", "text", "object_id", "tile"):
+        assert f".{key}" in script

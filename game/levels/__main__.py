@@ -1,24 +1,33 @@
-"""``python -m game.levels``: check maps, solve them, and keep the Tiled project's classes
-up to date.
+"""``python -m game.levels`` (installed: ``tile-hopper-levels``): check maps, solve them,
+measure the player's reach, and keep the Tiled project's classes up to date.
 
-``check PATH...`` prints one line per problem, ``PATH: place: message — how to fix``
-(warnings say ``warning:`` before the message), and exits 0 when every map is playable,
-1 otherwise, 2 for bad usage. A folder stands for the ``.tmx`` maps inside it. Never a
-traceback, whatever the input. A map that loads is also *solved*
-(:mod:`game.levels.solver`): if the search gives up without reaching an Exit, that is an
-error naming the furthest place reached; if it runs out of time (``--solve-seconds``), a
-warning; ``--no-solve`` skips the search. The summary line, on stdout, says how high and
-far the player jumps.
+``check [PATH...]`` prints one line per problem, ``PATH: place: message — how to fix``
+(warnings say ``warning:`` before the message). A folder stands for the ``.tmx`` maps inside
+it; no PATH checks the shipped campaign. Never a traceback, whatever the input. A map that
+loads is then *judged* (:mod:`game.levels.verdict`): **solved** (a route reaches an Exit
+when replayed), **impossible** (no open path joins spawn and Exit, or the Exit lies outside
+the player's reach: an error), or **not decided** (the search spent its budget of work,
+``--budget N`` moves, or ``--seconds S`` if given, and nothing proved it impossible: a
+``warning: not decided`` line that says how far it got and how to search further).
+``--proof SCRIPT`` replays a recorded win instead of searching; ``--no-solve`` judges
+nothing; ``--format json`` prints one JSON document instead of lines. The summary line
+counts each verdict and states the player's reach. Exit status: 0 every map playable (and,
+when judged, solved); 1 a map is bad or impossible; 2 bad usage; 3 no map bad or
+impossible, but at least one not decided.
 
-``solve MAP [--out SCRIPT] [--picture PNG] [--seconds S]`` searches for that route, writes
-it as an input script and draws it over the map; exit 0 when found, 1 when the map is bad or
-no route was found (the line says how far the search got), 2 for bad usage.
+``solve MAP [--out SCRIPT] [--picture PNG] [--budget N] [--seconds S]`` searches for that
+route, writes it as an input script and draws it over the map; exit 0 when found, 1 when
+there is no route to write: the map is bad, impossible or not decided (the line says which,
+and how far the search got), 2 for bad usage.
+
+``reach`` prints the player's reach with the default physics (or a map's own, given one),
+measured in the game's own tick: the highest ledge and the widest gaps.
 
 ``types`` says whether the generated Tiled files in ``levels/`` match
 :mod:`game.levels.classes` (exit 1 if not); ``types --write`` regenerates them.
 
 >>> from game.levels import LEVELS_DIR
->>> check([LEVELS_DIR], solve_seconds=None)  # doctest: +ELLIPSIS
+>>> check([LEVELS_DIR], Options(solve=False))  # doctest: +ELLIPSIS
 checked 6 map(s): all playable; the player jumps 2.8 tiles high and 3.6 tiles across ...
 0
 """
@@ -26,6 +35,7 @@ checked 6 map(s): all playable; the player jumps 2.8 tiles high and 3.6 tiles ac
 from __future__ import annotations
 
 import argparse
+import json
 import math
 import os
 import signal
@@ -35,19 +45,37 @@ from pathlib import Path
 
 import pygame
 
+from game.levels.checking import Finding, MapReport, Options, check_map
 from game.levels.errors import LevelError, escaped
-from game.levels.loader import check_level, load_level
+from game.levels.loader import load_level
 from game.levels.outputs import image_suffix, write_output, write_surface
-from game.levels.reach import measure_reach
+from game.levels.reach import limits_of, measure_limits, measure_reach
 from game.levels.route_picture import draw_route
-from game.levels.solver import Effort, solve
-from game.sim.level import Level
+from game.levels.shipped import LEVELS_DIR
+from game.levels.solver import DEFAULT_BUDGET, Effort
+from game.levels.verdict import Kind, judge
 from game.sim.tuning import TICK_HZ, Tuning
 
-DEFAULT_SOLVE_SECONDS = 120.0  # how long check looks for a route on one map
 TILE_PX = 16  # the tile size the reach is given in (the shipped maps')
 
+EXIT_OK = 0
+EXIT_BAD = 1  # a map is bad, or proven impossible
+EXIT_USAGE = 2
+EXIT_UNDECIDED = 3  # nothing bad or impossible, but some map's search was not decided
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
+
+
+def command_name(argv0: str | None = None) -> str:
+    """The command as it was typed, for usage lines and advice: ``tile-hopper-levels`` when
+    installed, else ``python -m game.levels``.
+
+    >>> command_name("/usr/bin/tile-hopper-levels"), command_name("/x/game/levels/__main__.py")
+    ('tile-hopper-levels', 'python -m game.levels')
+    """
+    name = Path(argv0 if argv0 is not None else sys.argv[0]).name
+    if not name or name in ("__main__.py", "-c", "-m") or name.startswith("python"):
+        return "python -m game.levels"
+    return name.removesuffix(".exe")
 
 
 def _maps(path: Path) -> Iterator[tuple[Path, str | None]]:
@@ -66,110 +94,115 @@ def _maps(path: Path) -> Iterator[tuple[Path, str | None]]:
         yield from ((map_path, None) for map_path in found)
 
 
-def _unsolved(path: Path, level: Level, seconds: float | None) -> tuple[str, bool] | None:
-    """The line for a map whose Exit the solver did not reach, and whether it is an error
-    (the search gave up) or a warning (it ran out of time, which proves nothing)."""
-    solution = solve(level, Effort(seconds=seconds))
-    if solution.found:
-        return None
-    col, row = solution.furthest_tile()
-    if solution.timed_out and seconds is not None:
-        return (f"{path}: tile ({col},{row}): warning: no route to an Exit was found within "
-                f"{seconds:g} s; this is the furthest place reached — give the search more "
-                "time with --solve-seconds, or run python -m game.levels solve on this map",
-                False)
-    return (f"{path}: tile ({col},{row}): the exit was not reached from the spawn; this is "
-            "the furthest place reached — check the jumps on the way against the player's "
-            f"reach, or run python -m game.levels solve {path} --picture route.png to see "
-            "how far the search got", True)
-
-
-def _reach_summary(own: list[tuple[Path, Tuning]]) -> str:
+def reach_summary(own: list[tuple[Path, Tuning]]) -> str:
     """The player's reach with the default physics, then on each map that sets its own."""
+    default = Tuning()
     text = ("with the default physics the player " if own else "the player ") + \
-        measure_reach(Tuning()).describe(TILE_PX)
+        measure_reach(default).describe(TILE_PX) + "; " + limits_of(default).describe()
     for path, tuning in own:
-        text += f"; on {path.name}, with its own physics, it " + \
-            measure_reach(tuning).describe(TILE_PX)
+        text += (f"; on {path.name}, with its own physics, it "
+                 f"{measure_reach(tuning).describe(TILE_PX)}; {limits_of(tuning).describe()}")
     return text
 
 
-def check(paths: list[Path], solve_seconds: float | None = DEFAULT_SOLVE_SECONDS) -> int:
-    """Print what is wrong with each map; return the exit status. ``solve_seconds`` None:
-    do not look for a route to the Exit."""
-    checked = failures = 0
-    own: list[tuple[Path, Tuning]] = []  # the maps whose properties change the physics
-    for argument in paths:
+def _summary(reports: list[MapReport], options: Options) -> tuple[str, int]:
+    """The summary line and the exit status."""
+    bad = sum(r.bad and r.verdict is not Kind.IMPOSSIBLE for r in reports)
+    counts = {kind: sum(r.verdict is kind for r in reports) for kind in Kind}
+    impossible, undecided = counts[Kind.IMPOSSIBLE], counts[Kind.UNDECIDED]
+    # "all playable" only when nothing is bad, impossible or left undecided by the search.
+    parts = [] if bad or impossible else ["all playable"] if not undecided else ["none bad"]
+    if bad:
+        parts.append(f"{bad} not playable")
+    if options.solve:
+        parts += [f"{counts[kind]} {kind.value}" for kind in Kind
+                  if counts[kind] or kind is Kind.SOLVED]
+    own = [(r.path, r.tuning) for r in reports if r.tuning is not None]
+    line = f"checked {len(reports)} map(s): {', '.join(parts)}; {reach_summary(own)}"
+    status = (EXIT_BAD if bad or impossible else EXIT_UNDECIDED if undecided else EXIT_OK)
+    return line, status
+
+
+def check(paths: list[Path], options: Options, output: str = "text") -> int:
+    """Print what is wrong with each map and how each was judged; return the exit status."""
+    reports: list[MapReport] = []
+    for argument in paths or sorted(LEVELS_DIR.glob("*.tmx")):  # none: the campaign
         for path, refusal in _maps(argument):
-            checked += 1
             if refusal is not None:
-                print(escaped(refusal))
-                failures += 1
-                continue
-            try:
-                findings = check_level(path)
-                lines, failed = list(findings.lines()), bool(findings.errors)
-                if not failed:
-                    level = load_level(path)
-                    tuning = Tuning().with_map_properties(level.properties)
-                    if tuning != Tuning():  # its properties change the physics
-                        own.append((path, tuning))
-                    unsolved = (None if solve_seconds is None
-                                else _unsolved(path, level, solve_seconds))
-                    if unsolved is not None:
-                        lines.append(unsolved[0])
-                        failed = unsolved[1]
-            except Exception as error:  # a loader bug still gets a sentence
-                lines = [f"{path}: the map could not be read ({type(error).__name__}: "
-                         f"{error}) — open it in Tiled and save it again"]
-                failed = True
-            for line in lines:
-                print(escaped(line))
-            failures += failed
-    verdict = "all playable" if not failures else f"{failures} not playable"
-    solved = ", each solved from spawn to Exit" if solve_seconds is not None and not failures \
-        else ""
-    print(escaped(f"checked {checked} map(s): {verdict}{solved}; {_reach_summary(own)}"))
-    return 1 if failures else 0
+                report = MapReport(path)
+                report.findings.append(_refused(path, refusal))
+            else:
+                report = check_map(path, options)
+            reports.append(report)
+            if output == "text":
+                for finding in report.findings:
+                    print(escaped(finding.text), flush=True)
+    line, status = _summary(reports, options)
+    if output == "json":
+        print(json.dumps({"maps": [r.as_json() for r in reports], "summary": line,
+                          "status": status}, indent=1))
+    else:
+        print(escaped(line))
+    return status
 
 
-def solve_command(path: Path, out: Path | None, picture: Path | None,
-                  seconds: float | None) -> int:
-    """``solve``: find a route, write the script and the picture; return the exit status."""
+def _refused(path: Path, text: str) -> Finding:
+    return Finding("error", text, "", text.split(": ", 1)[-1], "")
+
+
+def solve_command(path: Path, out: Path | None, picture: Path | None, effort: Effort,
+                  command: str) -> int:
+    """``solve``: judge the map, write the script and the picture; return the exit status."""
     try:
         level = load_level(path, images=picture is not None)
     except LevelError as error:
         print(error, file=sys.stderr)
-        return 1
-    solution = solve(level, Effort(seconds=seconds))
+        return EXIT_BAD
+    verdict = judge(level, effort, command)
+    solution = verdict.solution
     if picture is not None:
+        route = solution.route if solution is not None else []
+        furthest = (solution.furthest if solution is not None and not solution.found
+                    else None)
+        reach = verdict.reach.cells if verdict.reach is not None else None
         suffix = image_suffix(picture)
-        drawn = draw_route(level, solution.route, None if solution.found else solution.furthest)
+        drawn = draw_route(level, route, furthest, reach)
         failed = write_output(picture, lambda tmp: write_surface(drawn, tmp, suffix),
                               "the picture", suffix)
         if failed is not None:
             print(failed, file=sys.stderr)
-            return 1
-    if not solution.found:
-        col, row = solution.furthest_tile()
-        why = f"in {seconds:g} s" if solution.timed_out and seconds is not None else \
-            "with every move it tried"
-        print(f"{path}: tile ({col},{row}): no route to an Exit was found {why}; this is the "
-              "furthest place reached — see the picture (--picture) for the way there",
-              file=sys.stderr)
-        return 1
+            return EXIT_BAD
+    if verdict.kind is not Kind.SOLVED or solution is None:
+        where = f"tile ({verdict.tile[0]},{verdict.tile[1]}): " if verdict.tile else ""
+        print(escaped(f"{path}: {where}{verdict.finding} — {verdict.advice}"), file=sys.stderr)
+        return EXIT_BAD  # impossible or not decided: no route to write (the public form)
     script = solution.script()
     if out is not None:
         failed = write_output(out, lambda tmp: tmp.write_text(script, encoding="utf-8"),
                               "the script")
         if failed is not None:
             print(failed, file=sys.stderr)
-            return 1
+            return EXIT_BAD
     else:
         sys.stdout.write(script)
     print(f"{path}: a route reaches the exit at tick {solution.exit_tick} "
-          f"({solution.exit_tick / TICK_HZ:.1f} s of play)", file=sys.stderr)
-    return 0
+          f"({solution.exit_tick / TICK_HZ:.1f} s of play; {solution.moves_tried:,} moves "
+          "tried)", file=sys.stderr)
+    return EXIT_OK
+
+
+def reach_command(path: Path | None) -> int:
+    """``reach``: the player's reach, measured, with the default physics or a map's own."""
+    tuning = Tuning()
+    if path is not None:
+        try:
+            tuning = tuning.with_map_properties(load_level(path).properties)
+        except LevelError as error:
+            print(error, file=sys.stderr)
+            return EXIT_BAD
+    limits = limits_of(tuning) if path is None else measure_limits(tuning)
+    print(f"the player {measure_reach(tuning).describe(TILE_PX)}; {limits.describe()}")
+    return EXIT_OK
 
 
 def _shown(path: Path) -> str:
@@ -216,43 +249,83 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_INTERRUPTED
 
 
-def _main(argv: list[str] | None) -> int:
-    for stream in (sys.stdout, sys.stderr):  # odd bytes in a file name must not crash print
-        if hasattr(stream, "reconfigure"):
-            stream.reconfigure(errors="backslashreplace")
-    parser = argparse.ArgumentParser(prog="python -m game.levels",
-                                     description="Check Tiled maps for the game.")
+def _budget(text: str) -> int:
+    """A positive whole number of moves, for argparse."""
+    if not text.isdigit() or len(text) > 12 or int(text) <= 0:
+        raise argparse.ArgumentTypeError(f"{text[:40]!r} is not a positive whole number of "
+                                         "moves")
+    return int(text)
+
+
+def _add_search_options(parser: argparse.ArgumentParser, seconds_flags: list[str]) -> None:
+    parser.add_argument("--budget", type=_budget, default=DEFAULT_BUDGET, metavar="N",
+                        help="the most moves the search may try on a map, the same on any "
+                        f"machine (default {DEFAULT_BUDGET:,}); more decides more maps")
+    parser.add_argument(*seconds_flags, dest="seconds", type=_seconds, default=None,
+                        metavar="S", help="also stop a map's search after S seconds of wall "
+                        "time (default: no limit; a limit in seconds may decide differently "
+                        "on a slower or busier machine)")
+
+
+def _parser(prog: str) -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog=prog, description="Check Tiled maps for the game.")
     commands = parser.add_subparsers(dest="command", required=True)
-    check_parser = commands.add_parser("check", help="check that maps are playable")
-    check_parser.add_argument("paths", nargs="+", type=Path, metavar="PATH",
-                              help="a .tmx map, or a folder of them")
+    check_parser = commands.add_parser(
+        "check", help="check that maps are playable and can be won",
+        description="Exit status: 0 every map playable (and solved, when searched); 1 a map "
+        "is bad or impossible; 2 bad usage; 3 none bad or impossible, but some not decided.")
+    check_parser.add_argument("paths", nargs="*", type=Path, metavar="PATH",
+                              help="a .tmx map, or a folder of them (default: the shipped "
+                              "campaign)")
     check_parser.add_argument("--no-solve", action="store_true",
                               help="do not search for a route from the spawn to an Exit")
-    check_parser.add_argument("--solve-seconds", type=_seconds, default=DEFAULT_SOLVE_SECONDS,
-                              metavar="S", help="how long to look for a route on each map "
-                              f"(default {DEFAULT_SOLVE_SECONDS:g})")
-    solve_parser = commands.add_parser("solve", help="find inputs that win a map")
+    _add_search_options(check_parser, ["--seconds", "--solve-seconds"])
+    check_parser.add_argument("--proof", type=Path, metavar="SCRIPT",
+                              help="a win recorded with python -m game --record: replay it "
+                              "instead of searching (one map only)")
+    check_parser.add_argument("--format", choices=("text", "json"), default="text",
+                              help="text lines (default) or one JSON document")
+    solve_parser = commands.add_parser(
+        "solve", help="find inputs that win a map",
+        description="Exit status: 0 a route was found; 1 the map is bad or impossible; "
+        "2 bad usage; 3 not decided.")
     solve_parser.add_argument("map", type=Path, metavar="MAP", help="a .tmx map")
     solve_parser.add_argument("--out", type=Path, metavar="SCRIPT",
                               help="write the input script here (default: stdout)")
     solve_parser.add_argument("--picture", type=Path, metavar="PNG",
                               help="draw the route (or how far the search got) over the map")
-    solve_parser.add_argument("--seconds", type=_seconds, default=None, metavar="S",
-                              help="give up after this many seconds (default: no limit "
-                              "beyond the search's own)")
+    _add_search_options(solve_parser, ["--seconds"])
+    reach_parser = commands.add_parser("reach", help="the player's reach, measured")
+    reach_parser.add_argument("map", type=Path, nargs="?", metavar="MAP",
+                              help="use this map's own physics (default: the game's)")
     types_parser = commands.add_parser("types", help="the game's classes for Tiled")
     types_parser.add_argument("--write", action="store_true",
                               help="regenerate levels/*.tiled-project and friends")
+    return parser
+
+
+def _main(argv: list[str] | None) -> int:
+    for stream in (sys.stdout, sys.stderr):  # odd bytes in a file name must not crash print
+        if hasattr(stream, "reconfigure"):
+            stream.reconfigure(errors="backslashreplace")
+    prog = command_name()
+    parser = _parser(prog)
     args = parser.parse_args(argv)
     if args.command == "types":
         return types(args.write)
+    if args.command == "reach":
+        return reach_command(args.map)
+    effort = Effort(budget=args.budget, seconds=args.seconds)
     if args.command == "solve":
         if args.picture is not None:
             os.environ.setdefault("SDL_VIDEODRIVER", "dummy")  # pictures, never a window
             pygame.display.init()
             pygame.display.set_mode((1, 1))
-        return solve_command(args.map, args.out, args.picture, args.seconds)
-    return check(args.paths, None if args.no_solve else args.solve_seconds)
+        return solve_command(args.map, args.out, args.picture, effort, prog)
+    if args.proof is not None and (len(args.paths) != 1 or args.no_solve):
+        parser.error("--proof SCRIPT goes with exactly one map, and not with --no-solve")
+    return check(args.paths, Options(solve=not args.no_solve, effort=effort,
+                                     proof=args.proof, command=prog), args.format)
 
 
 if __name__ == "__main__":

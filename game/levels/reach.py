@@ -10,16 +10,28 @@ jump cuts the rise. So :func:`measure_reach` builds a flat test level, runs the 
 full speed, holds jump until it lands, and reads the highest point and the landing place off
 the real :meth:`World.step` with the given tuning.
 
+How far the feet travel is not the widest gap, though: the body is 12 px wide and stands on
+a ledge while any of it is over the ledge, and coyote time lets a jump start a few ticks
+after the feet have left it. So :func:`measure_limits` plays the real thing: a ledge of
+every height and a gap of every width, the jump pressed on every tick near the edge, and
+keeps the highest ledge landed on and the widest gap crossed (plain: jump pressed while on
+the ground; coyote: pressed on any tick, the last coyote tick included).
+
 >>> reach = measure_reach(Tuning())
 >>> round(reach.height_px, 1), round(reach.distance_px, 1)
 (44.3, 57.0)
 >>> reach.describe(16)
 'jumps 2.8 tiles high and 3.6 tiles across at a run (16 px tiles)'
+>>> measure_limits(Tuning())
+Limits(ledge_px=44, gap_px=68, coyote_gap_px=76)
 """
 
 from __future__ import annotations
 
+import math
+from collections.abc import Iterator
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 
 from game.collision.aabb import Box
@@ -27,6 +39,7 @@ from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import TileGrid
 from game.sim.inputs import Action
 from game.sim.level import Level
+from game.sim.snapshot import Snapshot
 from game.sim.tuning import Tuning
 from game.sim.world import World
 
@@ -79,3 +92,139 @@ def measure_reach(tuning: Tuning) -> Reach:
     take_off = path[0]
     highest = min(box.y for box in path)
     return Reach(take_off.y - highest, path[-1].x - take_off.x)
+
+
+LEDGE_ROW = 30  # the floor's top row in the test levels of measure_limits
+RUN_COL = 2  # where the player starts its run
+EDGE_COL = 12  # where the floor ends (a gap) or the ledge starts
+EARLY_PRESSES = 8  # jump presses tried before the edge or the wall is reached
+
+
+@dataclass(frozen=True)
+class Limits:
+    """The highest ledge landed on and the widest gaps crossed, in whole pixels."""
+
+    ledge_px: int
+    gap_px: int  # jump pressed while standing
+    coyote_gap_px: int  # jump pressed on any tick, the last coyote tick included
+
+    def describe(self) -> str:
+        return (f"the highest ledge it lands on is {self.ledge_px} px, the widest gap it "
+                f"crosses {self.gap_px} px with a running jump and {self.coyote_gap_px} px "
+                "with a coyote jump (pressed just after running off the edge)")
+
+
+# measure_limits(Tuning()), kept here because measuring takes seconds; the doctest above
+# and tests/test_solver.py measure it again and fail if it changes.
+DEFAULT_LIMITS = Limits(ledge_px=44, gap_px=68, coyote_gap_px=76)
+
+
+def limits_of(tuning: Tuning) -> Limits:
+    """The limits for ``tuning``: the kept figures for the default physics, else measured."""
+    return DEFAULT_LIMITS if tuning == Tuning() else measure_limits(tuning)
+
+
+def _floor(grid: TileGrid, left_px: float, right_px: float, top_px: float) -> None:
+    """Solid ground from ``left_px`` to ``right_px`` with its top at ``top_px``, down to the
+    test level's bottom row (partial tiles at the edges)."""
+    tile = TEST_TILE_PX
+    for col in range(math.floor(left_px / tile), math.ceil(right_px / tile)):
+        x0, x1 = max(left_px, col * tile), min(right_px, (col + 1) * tile)
+        for row in range(math.floor(top_px / tile), TEST_ROWS - 4):
+            y0 = max(top_px, row * tile)
+            if x1 > x0 and (row + 1) * tile > y0:
+                grid.put(col, row, TileShape(Box(x0, y0, x1 - x0, (row + 1) * tile - y0),
+                                             TileKind.SOLID, col, row))
+
+
+def _attempts(tuning: Tuning, grid: TileGrid, target_top: float, target_left: float,
+              offset_px: float) -> Iterator[tuple[bool, bool]]:
+    """Run right from RUN_COL (plus ``offset_px``) and press jump on each tick worth trying,
+    from a few before the run leaves the ground or meets the wall to the end of coyote time:
+    for each, does the player come to stand at ``target_top`` right of ``target_left``, and
+    was it on the ground when jump was pressed?"""
+    floor_top = LEDGE_ROW * TEST_TILE_PX
+    spawn = Box(RUN_COL * TEST_TILE_PX + offset_px, floor_top - tuning.player_height_px,
+                tuning.player_width_px, tuning.player_height_px)
+    level = Level(Path("limits"), grid, spawn)
+    run, jump = frozenset({Action.RIGHT}), frozenset({Action.RIGHT, Action.JUMP})
+    world = World(level, tuning)
+    leaves = 0
+    for leaves in range(MAX_AIR_TICKS):  # noqa: B007  (the tick it leaves is wanted)
+        world.step(run)
+        moved = world.moves.get(world.player)
+        if not world.player.on_ground or (moved is not None and moved.x.hit is not None):
+            break
+    first = max(0, leaves - EARLY_PRESSES)
+    world = World(level, tuning)
+    for _ in range(first):
+        world.step(run)
+    start = Snapshot.of(world)
+    for press in range(first, leaves + tuning.coyote_ticks + 2):
+        start.restore(world)
+        for _ in range(press - first):
+            world.step(run)
+        grounded, landed = world.player.on_ground, False
+        for tick in range(MAX_AIR_TICKS):
+            world.step(jump)
+            box = world.player.box
+            if tick > 0 and world.player.on_ground:
+                landed = box.bottom == target_top and box.right > target_left
+                break
+            if tick > 0 and world.player.vy > 0 and box.bottom > target_top:
+                break  # falling past the top it meant to land on
+        yield landed, grounded
+
+
+def _crosses(tuning: Tuning, gap_px: int) -> tuple[bool, bool]:
+    """Can a gap of ``gap_px`` be crossed: by a jump pressed standing, and by any jump?"""
+    grid = TileGrid(TEST_COLS // 4, TEST_ROWS, TEST_TILE_PX, TEST_TILE_PX)
+    top, edge = LEDGE_ROW * TEST_TILE_PX, EDGE_COL * TEST_TILE_PX
+    _floor(grid, 0, edge, top)
+    _floor(grid, edge + gap_px, grid.width_px, top)
+    plain = anyhow = False
+    for offset in _offsets(tuning):
+        for landed, grounded in _attempts(tuning, grid, top, edge + gap_px, offset):
+            plain = plain or (landed and grounded)
+            anyhow = anyhow or landed
+            if plain:
+                return True, True
+    return plain, anyhow
+
+
+def _climbs(tuning: Tuning, ledge_px: int) -> bool:
+    grid = TileGrid(TEST_COLS // 4, TEST_ROWS, TEST_TILE_PX, TEST_TILE_PX)
+    top, edge = LEDGE_ROW * TEST_TILE_PX, EDGE_COL * TEST_TILE_PX
+    _floor(grid, 0, edge, top)
+    _floor(grid, edge, grid.width_px, top - ledge_px)
+    return any(landed for offset in _offsets(tuning)
+               for landed, _ in _attempts(tuning, grid, top - ledge_px, edge, offset))
+
+
+def _offsets(tuning: Tuning) -> list[float]:
+    """Start places across one tick's run, a quarter pixel apart: where the last step
+    before the edge falls changes how far the jump carries."""
+    step = tuning.run_speed_px_s * tuning.tick_s
+    return [quarter / 4 for quarter in range(max(1, math.ceil(step * 4)))]
+
+
+@lru_cache(maxsize=16)
+def measure_limits(tuning: Tuning) -> Limits:
+    """The highest ledge and the widest gaps, played out in the game's own tick: from the
+    height of a full jump down (and from its length plus the body's width down), the first
+    that the player makes."""
+    reach = measure_reach(tuning)
+    ledge = math.floor(reach.height_px)
+    while ledge > 0 and not _climbs(tuning, ledge):
+        ledge -= 1
+    widest = math.ceil(reach.distance_px + tuning.player_width_px
+                       + tuning.run_speed_px_s * tuning.tick_s * (tuning.coyote_ticks + 2))
+    plain_gap = coyote_gap = 0
+    for gap in range(max(0, widest), 0, -1):
+        plain, anyhow = _crosses(tuning, gap)
+        if anyhow and not coyote_gap:
+            coyote_gap = gap
+        if plain:
+            plain_gap = gap
+            break
+    return Limits(ledge, plain_gap, max(coyote_gap, plain_gap))

@@ -4,7 +4,9 @@ Where it sits: ``python -m game.levels solve MAP --picture PNG`` calls :func:`dr
 with what :func:`game.levels.solver.solve` found. It draws the map's own tiles (the images
 of its tilesets), each moving platform where it starts with the line its route follows,
 the spawn, the Exits, the path of the hitbox's centre tick by tick, and, when no route was
-found, a ring round the furthest place reached.
+found, a ring round the furthest place reached. When a map was proven impossible it also
+tints every cell the proof's fill reached (:mod:`game.levels.reachable`), so the designer
+sees where the player's reach ends and the Exit lies outside it.
 
 What it teaches: a picture made from the same data the game plays is the quickest way to
 see why a level can or cannot be finished; nothing here changes the level or the route.
@@ -12,7 +14,7 @@ see why a level can or cannot be finished; nothing here changes the level or the
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from pathlib import Path
 
 import pygame
@@ -27,6 +29,7 @@ SPAWN = pygame.Color("#3a7bd5")  # the colours the Tiled project gives these cla
 EXIT = pygame.Color("#5cb85c")
 PLATFORM = pygame.Color("#e67e22")
 FURTHEST = pygame.Color("#d9534f")
+REACHED = pygame.Color(255, 235, 120, 90)  # a cell the player's reach may touch
 MAX_PICTURE_PX = 8192  # a bigger map is drawn at a fraction of its size
 
 
@@ -50,13 +53,26 @@ def _outline(target: pygame.Surface, box: Box, color: pygame.Color) -> None:
     pygame.draw.rect(target, color, box.to_rect(), 2)
 
 
-def draw_route(level: Level, route: Sequence[Box], furthest: Box | None) -> pygame.Surface:
-    """The map with the route drawn over it (``furthest`` ringed when the route fell short)."""
+def _tint_cells(target: pygame.Surface, level: Level, cells: Iterable[tuple[int, int]]) -> None:
+    grid = level.grid
+    wash = pygame.Surface((grid.tile_w, grid.tile_h), pygame.SRCALPHA)
+    wash.fill(REACHED)
+    for col, row in cells:
+        if 0 <= row < grid.rows:
+            target.blit(wash, (col * grid.tile_w, row * grid.tile_h))
+
+
+def draw_route(level: Level, route: Sequence[Box], furthest: Box | None,
+               reach: Iterable[tuple[int, int]] | None = None) -> pygame.Surface:
+    """The map with the route drawn over it (``furthest`` ringed when the route fell short,
+    and the cells of ``reach`` tinted when given)."""
     grid = level.grid
     picture = pygame.Surface((grid.width_px, grid.height_px))
     picture.fill(pygame.Color(level.background_color) if level.background_color else SKY)
     for layer in (*level.layers, *level.foreground):
         _draw_layer(picture, layer, level)
+    if reach is not None:
+        _tint_cells(picture, level, reach)
     for platform in level.platforms:
         w, h = platform.width_px, platform.height_px
         x, y = platform.path.points[0]
@@ -83,5 +99,6 @@ def draw_route(level: Level, route: Sequence[Box], furthest: Box | None) -> pyga
     return picture
 
 
-def save_route(path: Path, level: Level, route: Sequence[Box], furthest: Box | None) -> None:
-    pygame.image.save(draw_route(level, route, furthest), str(path))
+def save_route(path: Path, level: Level, route: Sequence[Box], furthest: Box | None,
+               reach: Iterable[tuple[int, int]] | None = None) -> None:
+    pygame.image.save(draw_route(level, route, furthest, reach), str(path))

@@ -15,12 +15,14 @@ What it teaches: a **beam search** over a deterministic simulation.
 * **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
   state, step the world, keep the child's state.
 * **A layer per move.** All children of the current beam are scored by how far they still
-  are from an Exit, and only the best :attr:`Effort.widths` survive. A loss of a life ends
-  a branch. Two states in the same place, at the same speed, with the moving platforms at
-  the same point of their paths, are the same state: only the first is kept, ever, so the
-  beam cannot go round in circles.
-* **The score** is the walking distance to the nearest Exit through open cells (a flood
-  fill from the Exit over the tile grid). The beams add a penalty for falling with no
+  are from an Exit, and only the best :attr:`Effort.widths` survive. Two states with the
+  same key (:mod:`game.levels.search_key`: about the same place and speed, the nearby
+  moving platforms at the same point of their paths) are the same state: only the first is
+  kept, ever, so the beam cannot go round in circles.
+* **The score** is the number of steps from the player's cell to an Exit along the moves
+  of the reach proof (:func:`game.levels.reachable.steps_to_exit`): it knows that a ledge
+  too high must be climbed from elsewhere, and a state from which no step leads on to an
+  Exit (at the bottom of a pit) is dropped. The beams add a penalty for falling with no
   floor below: standing at the edge of a pit waiting for a platform is better than jumping
   into it.
 * **Best first, then beams.** First a best-first search always carries on from the state
@@ -29,15 +31,19 @@ What it teaches: a **beam search** over a deterministic simulation.
   a level with moving platforms the beams go first: waiting for a platform never improves
   the score, so a best-first search would never wait.
 * **Widening.** A narrow beam is fast but can throw away the one state that needed to wait.
-  When a beam dies out, or stops getting closer for a while, the search starts again wider.
+  When a beam dies out, or stops getting closer for a while, the search starts again wider,
+  doubling past the last of :attr:`Effort.widths` until the budget is spent.
+* **Losing a life** is allowed while lives remain (the game lets a player finish after one):
+  the branch carries on from the respawn place, counting the life lost, behind a penalty.
 
-When solid tiles wall the Exit off from the spawn completely (the flood fill never gets
-from one to the other), no route can exist; the search then only looks, briefly, for the
-place closest to an Exit as the crow flies, to say how far a player gets.
-
-Everything is deterministic: the same map and options give the same script. The search is
-bounded by layers, widths and, optionally, wall-clock seconds; when it gives up it reports
-the furthest place it reached (closest to an Exit by the score).
+The search never proves a map *impossible*: :mod:`game.levels.reachable` does that, and
+:mod:`game.levels.verdict` asks it first. Everything is deterministic: the search is bounded
+by **work**, the moves it tries (:attr:`Effort.budget`), so the same map and options give the
+same script and the same verdict on any machine, however loaded. A wall-clock limit
+(:attr:`Effort.seconds`) can be added on top; only then may the answer depend on the machine.
+There is no limit on the length of a route in game time: a long route costs only moves.
+When the search gives up it reports the furthest place it reached (closest to an Exit by the
+score) and how many moves it tried.
 """
 
 from __future__ import annotations
@@ -53,6 +59,8 @@ from pathlib import Path
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind
 from game.levels.loader import load_level
+from game.levels.reachable import steps_to_exit
+from game.levels.search_key import StateKey, route_box, state_key
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, Actions, InputEvent, Recorder
 from game.sim.level import Level
@@ -66,24 +74,23 @@ CHOICES: tuple[Actions, ...] = (
     frozenset(), frozenset({J}), frozenset({D, J}))
 DROP = CHOICES[-1]  # only tried while standing on a one-way floor
 PIT_PENALTY_TILES = 6.0  # falling with no floor below costs as much as this much distance
-SAME_PLACE_PX = 4.0  # states closer than this (and alike in speed) count as one
-SAME_SPEED_PX_S = 30.0
-PLATFORM_PHASE_PX = 16.0  # moving platforms this close along their paths count as alike
 STALL_MOVES = 60  # a beam that gets no closer for this many moves (plus a platform's
 #                   round trip) is given up for a wider one
 UNREACHABLE = math.inf
-SEALED_MOVES = 3_000  # moves spent finding the closest place to an Exit walled off by tiles
 BEST_FIRST_WEIGHT = 3.0  # how much more a tile of distance counts than a tile's worth of time
+DEATH_PENALTY_TILES = 20.0  # losing a life costs as much as this much distance
+FEET_PX = 0.5  # the search scores the cell just above the middle of the feet
+DEFAULT_BUDGET = 50_000  # moves the search may try on one map (each move is 6 ticks)
 
 
 @dataclass(frozen=True)
 class Effort:
     """How hard to look: the beam widths tried in turn, and the limits on each try."""
 
-    greedy_moves: int = 14_000  # moves the best-first search may try before the beams
-    widths: tuple[int, ...] = (12, 24, 48)
-    max_game_s: float = 300.0  # the longest route looked for, in game time
-    seconds: float | None = None  # wall-clock limit for the whole search (None: none)
+    budget: int = DEFAULT_BUDGET  # moves the whole search may try: the bound on its work
+    greedy_moves: int = 14_000  # of those, the most the best-first search may try first
+    widths: tuple[int, ...] = (6, 12, 24)
+    seconds: float | None = None  # an extra wall-clock limit (None: none, the default)
 
 
 @dataclass
@@ -93,6 +100,7 @@ class Node:
     parent: Node | None
     choice: Actions
     ticks: int  # ticks since the start
+    lives_lost: int = 0
 
 
 @dataclass
@@ -106,6 +114,12 @@ class Solution:
     route: list[Box] = field(default_factory=list)  # the hitbox after every tick
     moves_tried: int = 0
     timed_out: bool = False
+    budget: int = DEFAULT_BUDGET
+    states: int = 0  # distinct states the search kept
+
+    @property
+    def out_of_budget(self) -> bool:
+        return self.moves_tried >= self.budget
 
     @property
     def exit_tick(self) -> int:
@@ -171,13 +185,14 @@ class _Search:
         self.level = level
         self.effort = effort
         self.world = World(level)
-        self.steps = distances_to_exit(level)
+        self.steps = steps_to_exit(World(level)) or distances_to_exit(level)
         self.start = Snapshot.of(self.world)
         self.goal_cells = [cell for cell, steps in self.steps.items() if steps == 0]
-        x, y = self.world.player.box.center
-        spawn_cell = (math.floor(x / level.grid.tile_w), math.floor(y / level.grid.tile_h))
-        self.sealed = spawn_cell not in self.steps  # solid tiles part spawn and Exit
+        self.lives = self.world.tuning.start_lives
+        self.routes = [route_box(platform) for platform in self.world.platforms]
         self.moves_tried = 0
+        self.states = 0
+        self.exhausted = False  # a beam kept every state it met: wider ones cannot help
         self.pit_penalty = 0.0  # the beams set it: see beam()
         periods = [2 * p.spec.path.length / p.spec.speed_px_s for p in self.world.platforms
                    if p.spec.speed_px_s > 0]
@@ -192,10 +207,8 @@ class _Search:
         """How far the player still is from an Exit, in tiles (lower is better)."""
         world, grid = self.world, self.level.grid
         box = world.player.box
-        x, y = box.center
-        cell = (math.floor(x / grid.tile_w), math.floor(y / grid.tile_h))
-        if self.sealed:  # no open way at all: only the distance as the crow flies is left
-            return min((math.dist(cell, goal) for goal in self.goal_cells), default=UNREACHABLE)
+        cell = (math.floor(box.center[0] / grid.tile_w),
+                math.floor((box.bottom - FEET_PX) / grid.tile_h))
         steps = self.steps.get(cell)
         if steps is None:
             return UNREACHABLE
@@ -205,38 +218,36 @@ class _Search:
                 return steps + self.pit_penalty
         return float(steps)
 
-    def key(self, choice: Actions) -> tuple[object, ...]:
-        """What makes two states the same for the search (holding jump matters: a new
-        jump needs a fresh press)."""
-        player = self.world.player
-        phases = tuple(
-            math.floor(p.travelled_px / PLATFORM_PHASE_PX)
-            % max(1, math.floor(2 * p.spec.path.length / PLATFORM_PHASE_PX))
-            for p in self.world.platforms)
-        return (round(player.box.x / SAME_PLACE_PX), round(player.box.y / SAME_PLACE_PX),
-                round(player.vx / SAME_SPEED_PX_S), round(player.vy / SAME_SPEED_PX_S),
-                player.on_ground, player.dropping_through, J in choice,
-                phases, len(self.world.enemies))
+    def key(self, choice: Actions) -> StateKey:
+        """What makes two states the same for the search (:mod:`game.levels.search_key`)."""
+        return state_key(self.world, choice, self.routes)
 
     def out_of_time(self) -> bool:
-        return self.deadline is not None and time.monotonic() > self.deadline
+        """The search must stop: its budget of moves is spent, or its seconds are up."""
+        return self.moves_tried >= self.effort.budget or (
+            self.deadline is not None and time.monotonic() > self.deadline)
 
     def run(self) -> Node | None:
-        if self.sealed:  # no route can exist: just find how close one can get
-            self.best_first(min(self.effort.greedy_moves, SEALED_MOVES))
-            return None
+        """Best first (on a level without moving platforms), then ever wider beams, until a
+        route is found or the budget is spent."""
         if not self.world.platforms:  # waiting never looks better to a best-first search
-            found = self.best_first(self.effort.greedy_moves)
+            found = self.best_first(min(self.effort.greedy_moves, self.effort.budget))
             if found is not None or self.out_of_time():
                 return found
+        width = 0
         for width in self.effort.widths:
             found = self.beam(width)
-            if found is not None or self.out_of_time():
+            if found is not None or self.out_of_time() or self.exhausted:
+                return found
+        while not self.out_of_time() and not self.exhausted:  # budget left: wider still
+            width *= 2
+            found = self.beam(width)
+            if found is not None:
                 return found
         return None
 
     def children(self, snapshot: Snapshot, node: Node | None, ticks: int,
-                 seen: set[tuple[object, ...]]) -> Iterator[tuple[float, Snapshot, Node]]:
+                 seen: set[StateKey]) -> Iterator[tuple[float, Snapshot, Node]]:
         """Every new state one move from ``snapshot``; stops early at an Exit (its Node
         comes with an infinitely good score of minus infinity)."""
         for choice in CHOICES:
@@ -246,15 +257,23 @@ class _Search:
             if choice is DROP and not self.world.player.on_ground_one_way:
                 continue
             outcome = self.try_move(choice)
-            child = Node(node, choice, ticks + (outcome if outcome > 0 else MOVE_TICKS))
+            lost = node.lives_lost if node is not None else 0
+            if outcome < 0:
+                lost += 1
+                if lost >= self.lives:
+                    continue
+            child = Node(node, choice, ticks + (outcome if outcome > 0 else MOVE_TICKS), lost)
             if outcome > 0:
                 yield -math.inf, snapshot, child
                 return
-            key = self.key(choice)
-            if outcome < 0 or key in seen:
+            key = (*self.key(choice), lost)
+            if key in seen:
                 continue
             seen.add(key)
-            score = self.score()
+            score = self.score() + lost * DEATH_PENALTY_TILES
+            if score == UNREACHABLE:
+                continue  # no way on to an Exit from here, by the proof of reachable
+            self.states += 1
             if score < self.best[0]:
                 self.best = (score, self.world.player.box, child)
             yield score, Snapshot.of(self.world), child
@@ -264,7 +283,7 @@ class _Search:
         (weighted A*): quick on levels that need no waiting."""
         grid, tuning = self.level.grid, self.world.tuning
         tiles_per_tick = tuning.run_speed_px_s * tuning.tick_s / grid.tile_w
-        seen: set[tuple[object, ...]] = set()
+        seen: set[StateKey] = set()
         queue: list[tuple[float, int, Snapshot, Node | None]] = [(0.0, 0, self.start, None)]
         order = 0
         while queue and self.moves_tried < max_moves:
@@ -282,24 +301,27 @@ class _Search:
 
     def beam(self, width: int) -> Node | None:
         """One beam search of ``width``; the Node that reached an Exit, or None."""
-        tick_s = self.world.tuning.tick_s
-        max_moves = math.ceil(self.effort.max_game_s / (MOVE_TICKS * tick_s))
         self.pit_penalty = PIT_PENALTY_TILES  # a narrow beam must not fill up with falls
         beam: list[tuple[Snapshot, Node | None]] = [(self.start, None)]
-        seen: set[tuple[object, ...]] = set()
+        seen: set[StateKey] = set()
         closest, since_closer = UNREACHABLE, 0
-        for move in range(max_moves):
+        dropped = False
+        move = 0
+        while not self.out_of_time():
+            move += 1
             children: list[tuple[float, int, Snapshot, Node]] = []
             for snapshot, node in beam:
                 for score, child_state, child in self.children(
-                        snapshot, node, move * MOVE_TICKS, seen):
+                        snapshot, node, (move - 1) * MOVE_TICKS, seen):
                     if score == -math.inf:
                         return child
                     children.append((score, len(children), child_state, child))
             if self.out_of_time():
                 return None
             if not children:
+                self.exhausted = not dropped  # it kept every state it met, and all ended
                 return None
+            dropped = dropped or len(children) > width
             children.sort(key=lambda c: (c[0], c[1]))
             beam = [(snapshot, node) for _, _, snapshot, node in children[:width]]
             if children[0][0] < closest:
@@ -311,16 +333,16 @@ class _Search:
         return None
 
     def try_move(self, choice: Actions) -> int:
-        """Hold ``choice`` for one move: +ticks if an Exit was reached on that tick,
-        -1 if a life was lost, 0 otherwise."""
+        """Hold ``choice`` for one move: +ticks if an Exit was reached on that tick, else
+        -1 if a life was lost on the way (the world has put the player back), 0 if not."""
         self.moves_tried += 1
+        hurt = False
         for tick in range(1, MOVE_TICKS + 1):
-            kinds = {event.kind for event in self.world.step(choice)}
-            if EventKind.EXIT in kinds:
-                return tick
-            if EventKind.HURT in kinds:
-                return -1
-        return 0
+            for event in self.world.step(choice):
+                if event.kind is EventKind.EXIT:
+                    return tick
+                hurt = hurt or event.kind is EventKind.HURT
+        return -1 if hurt else 0
 
 
 def _held_per_tick(node: Node | None) -> list[Actions]:
@@ -337,8 +359,8 @@ def _held_per_tick(node: Node | None) -> list[Actions]:
 
 def replay(level_path: Path, held: Sequence[Actions], level: Level | None = None,
            ) -> tuple[bool, list[Box]]:
-    """Play ``held`` from the spawn as ``python -m game`` does; did it finish the level, and
-    where was the player after each tick?"""
+    """Play ``held`` from the spawn as ``python -m game`` does; did it finish the level
+    (lives may be lost on the way, as in play), and where was the player after each tick?"""
     campaign = Campaign(level_path, loader=lambda path: level or load_level(path))
     route: list[Box] = []
     for actions in held:
@@ -346,7 +368,7 @@ def replay(level_path: Path, held: Sequence[Actions], level: Level | None = None
         if campaign.levels_completed or campaign.outcome is not Outcome.RUNNING:
             break
         route.append(campaign.world.player.box)
-    return campaign.levels_completed > 0 and campaign.deaths == 0, route
+    return campaign.levels_completed > 0, route
 
 
 def solve(level: Level, effort: Effort | None = None) -> Solution:
@@ -358,8 +380,10 @@ def solve(level: Level, effort: Effort | None = None) -> Solution:
         won, route = replay(level.path, held, level)
         if not won:  # the search and a replay disagree: the snapshot missed some state
             raise AssertionError(f"{level.path}: the route found does not replay")
-        return Solution(level, True, held, route[-1], route, search.moves_tried)
+        return Solution(level, True, held, route[-1], route, search.moves_tried,
+                        budget=search.effort.budget, states=search.states)
     furthest_held = _held_per_tick(search.best[2])
     _, route = replay(level.path, furthest_held, level)
+    timed_out = search.deadline is not None and time.monotonic() > search.deadline
     return Solution(level, False, furthest_held, search.best[1], route, search.moves_tried,
-                    timed_out=search.out_of_time())
+                    timed_out=timed_out, budget=search.effort.budget, states=search.states)

@@ -1,0 +1,148 @@
+"""Check one map the way ``python -m game.levels check`` does, and say what was found.
+
+Where it sits: the command line (:mod:`game.levels.__main__`) calls :func:`check_map` for
+each map and prints the :class:`MapReport` as text lines or as JSON (for the Tiled
+extension in ``levels/extensions/``, which lists the findings in Tiled's Issues panel).
+
+What it teaches: one record per finding, with its place in named fields (the object id,
+the tile, the layer), so the same check feeds a person reading a terminal and a program
+selecting the object in an editor.
+
+A map is first read (:func:`game.levels.loader.check_level`): errors there make it *bad*.
+A map that loads is then judged (:mod:`game.levels.verdict`): solved, impossible or not
+decided.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from game.levels.designer_checks import designer_findings
+from game.levels.errors import LevelError, LevelWarning
+from game.levels.loader import check_level, load_level
+from game.levels.solver import Effort
+from game.levels.verdict import Kind, Verdict, judge, judge_proof
+from game.sim.inputs import InputScriptError
+from game.sim.level import Level
+from game.sim.tuning import Tuning
+
+OBJECT_PLACE = re.compile(r"object #(\d+)")
+TILE_PLACE = re.compile(r"tile \((-?\d+),(-?\d+)\)")
+LAYER_PLACE = re.compile(r"layer '([^']*)'")
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One line of the check, with its place taken apart."""
+
+    severity: str  # "error" or "warning"
+    text: str  # the whole line, as printed
+    where: str
+    message: str
+    fix: str
+
+    def as_json(self) -> dict[str, object]:
+        found_object = OBJECT_PLACE.search(self.where)
+        tile = TILE_PLACE.search(self.where)
+        layer = LAYER_PLACE.search(self.where)
+        return {"severity": self.severity, "text": self.text, "place": self.where,
+                "message": self.message, "fix": self.fix,
+                "object_id": int(found_object.group(1)) if found_object else None,
+                "tile": [int(tile.group(1)), int(tile.group(2))] if tile else None,
+                "layer": layer.group(1) if layer else None}
+
+
+def _finding(item: LevelError | LevelWarning) -> Finding:
+    severity = "warning" if isinstance(item, LevelWarning) else "error"
+    return Finding(severity, str(item), item.where, item.problem, item.fix)
+
+
+@dataclass
+class MapReport:
+    """What the check of one map found."""
+
+    path: Path
+    findings: list[Finding] = field(default_factory=list)
+    verdict: Kind | None = None  # None: not judged (bad, or --no-solve)
+    tuning: Tuning | None = None  # the map's own physics, when they differ from the default
+
+    @property
+    def bad(self) -> bool:
+        return any(f.severity == "error" for f in self.findings)
+
+    def add(self, severity: str, where: str, message: str, fix: str) -> None:
+        place = f"{where}: " if where else ""
+        label = "warning: " if severity == "warning" else ""
+        self.findings.append(Finding(severity, f"{self.path}: {place}{label}{message} — {fix}",
+                                     where, message, fix))
+
+    def as_json(self) -> dict[str, object]:
+        verdict = (self.verdict.value if self.verdict is not None
+                   else "bad" if self.bad else "not searched")
+        return {"path": str(self.path), "verdict": verdict,
+                "findings": [f.as_json() for f in self.findings]}
+
+
+@dataclass(frozen=True)
+class Options:
+    """How hard to judge: no search at all, a work budget and seconds, or a recorded win."""
+
+    solve: bool = True
+    effort: Effort = field(default_factory=Effort)
+    proof: Path | None = None
+    command: str = "python -m game.levels"
+
+
+def _add_verdict(report: MapReport, verdict: Verdict) -> None:
+    report.verdict = verdict.kind
+    if verdict.kind is Kind.SOLVED:
+        return
+    where = f"tile ({verdict.tile[0]},{verdict.tile[1]})" if verdict.tile is not None else ""
+    # Impossible is an error; not decided is neither proven bad nor good: a warning line,
+    # counted apart in the summary and given its own exit status.
+    report.add("error" if verdict.kind is Kind.IMPOSSIBLE else "warning", where,
+               verdict.finding, verdict.advice)
+
+
+def judge_level(path: Path, level: Level, options: Options) -> Verdict:
+    """The verdict on a loaded map: from the recorded win when given, else searched."""
+    if options.proof is not None:
+        return judge_proof(level, options.proof)
+    return judge(level, options.effort, options.command)
+
+
+def check_map(path: Path, options: Options) -> MapReport:
+    """Read ``path``, and when it loads and ``options.solve``, judge it."""
+    report = MapReport(path)
+    try:
+        findings = check_level(path)
+        report.findings += [_finding(w) for w in findings.warnings]
+        report.findings += [_finding(e) for e in findings.errors]
+        if findings.errors:
+            return report
+        level = load_level(path)
+        extra = designer_findings(path, level)
+        report.findings = [f for f in report.findings  # the loader's warning, made an error
+                           if not (f.severity == "warning" and "next_level" in f.where and any(
+                               e[1] == f.where for e in extra))]
+        for severity, where, message, fix in extra:
+            report.add(severity, where, message, fix)
+        if report.bad:
+            return report
+        tuning = Tuning().with_map_properties(level.properties)
+        if tuning != Tuning():
+            report.tuning = tuning
+        if options.solve:
+            _add_verdict(report, judge_level(path, level, options))
+    except InputScriptError as error:  # a --proof script with a bad line
+        report.add("error", "", f"the recorded win is not an input script ({error})",
+                   "record it again with python -m game --record SCRIPT")
+    except OSError as error:  # a --proof script that cannot be read
+        report.add("error", "", f"the script {options.proof} cannot be read "
+                   f"({error.strerror or error})", "check the path given to --proof")
+    except Exception as error:  # a loader bug still gets a sentence
+        report.add("error", "", f"the map could not be read ({type(error).__name__}: "
+                   f"{error})", "open it in Tiled and save it again")
+    return report

@@ -1,0 +1,492 @@
+"""Everything the player could ever touch: a generous flood fill that can prove a map unwinnable.
+
+Where it sits: ``python -m game.levels check`` and ``solve`` ask it before they search.
+A search that finds nothing proves nothing; this module proves the opposite direction: if
+the Exit lies outside the region computed here, *no* input wins the level, so the checker may
+call the map impossible.
+
+What it teaches: **over-approximation**. Instead of simulating the player exactly, follow one
+point of it (the middle of its feet) through the tile cells, allowing *more* than the game
+allows and never less:
+
+* **Open cells.** Only a cell wholly filled by a Solid tile is closed; partial tiles, one-way
+  tiles and spikes are all open (spikes can be crossed while invulnerable).
+* **Launches.** Wherever the feet can rest (the top of any Solid or OneWay shape, any point
+  of a moving platform's path, and an enemy's head, which gives a jump after a stomp) the
+  player may jump. The rise allowed there is the highest a jump rises *in the game's own
+  tick* (:func:`jump_rise`), a little more for a platform's lift, plus an enemy's height and
+  hop where enemies are.
+* **The jump envelope.** After ``k`` ticks in the air (counting the coyote ticks before the
+  jump) the feet are at most ``k`` ticks of full run speed to either side, and no higher than
+  the best jump has risen by then. Every cell a jump could pass through, walls ignored for
+  the bound but respected for the passage (the point moves only through open cells, to any of
+  its 8 neighbours), is reached.
+* **Falling.** Once the feet are well below where they left the ground, the fall is fast
+  enough that each row down allows at most a bounded sideways step; the fill carries on
+  downward with that rule, and any place the feet can rest starts a new launch.
+* **Respawns.** A checkpoint whose column the reached region crosses adds its respawn place
+  as a new start.
+
+Each rule only ever lets the point go further than the game would, so if an Exit's cells
+are never reached, the map cannot be won. The converse does not hold: a reached Exit proves
+nothing, which is what the search is for.
+
+Two questions, from cheap to sharp: :func:`open_path` (is there any open way at all, gravity
+ignored?) and :func:`reachable` (is the Exit inside the jump envelope's fill?).
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+
+from game.collision.aabb import Box
+from game.collision.axis_sweep import ground_under
+from game.collision.free_place import nearest_free_place
+from game.collision.shapes import TileKind
+from game.collision.tile_grid import TileGrid
+from game.sim.level import Level
+from game.sim.tuning import Tuning
+from game.sim.world import World
+
+Cell = tuple[int, int]
+SLACK_PX = 0.5  # rounding room on every bound
+FALL_DEPTH_PX = 24.0  # below the launch by this much, the fill switches to falling
+MAX_AIR_TICKS = 10_000
+RIDE_ROW = -(10**9)  # steps_to_exit's nodes for a platform ride sit in this row
+
+
+def jump_rise(tuning: Tuning) -> list[float]:
+    """How far above its take-off a full jump has risen after each tick, using the tick's
+    own rule (the jump sets the speed, gravity is added, then the body moves), until it comes
+    back down to its take-off height.
+
+    >>> round(max(jump_rise(Tuning())), 1)
+    44.3
+    """
+    vy, y, heights = -tuning.jump_speed_px_s, 0.0, [0.0]
+    for _ in range(MAX_AIR_TICKS):
+        vy = min(vy + tuning.gravity_px_s2 * tuning.tick_s, tuning.max_fall_speed_px_s)
+        y += vy * tuning.tick_s
+        heights.append(-y)
+        if y > 0:
+            break
+    return heights
+
+
+def fall_speed_after(tuning: Tuning, depth_px: float) -> float:
+    """The slowest a body can be falling once its feet are ``depth_px`` below where it left
+    the ground (it left at rest: a jump only makes it faster there)."""
+    vy, y = 0.0, 0.0
+    for _ in range(MAX_AIR_TICKS):
+        if y >= depth_px:
+            return vy
+        vy = min(vy + tuning.gravity_px_s2 * tuning.tick_s, tuning.max_fall_speed_px_s)
+        y += vy * tuning.tick_s
+    return vy
+
+
+@dataclass(frozen=True)
+class Envelope:
+    """The jump envelope of one tuning: how high the feet may be at each sideways distance."""
+
+    rise_by_tick: tuple[float, ...]  # the best height reachable by tick k (coyote included)
+    step_px: float  # the farthest the feet move sideways in one tick
+    slack_x_px: float  # corner correction and rounding
+    extra_rise_px: float  # an enemy's head or a platform's lift, where they are
+    air_ticks_to_depth: int  # ticks until the longest jump is FALL_DEPTH_PX below take-off
+    sideways_cells_per_row: int  # the widest sideways step per row once falling
+
+    def rise_at(self, distance_px: float) -> float:
+        """The most the feet can be above take-off ``distance_px`` to one side of it."""
+        if self.step_px <= 0:
+            first = 0 if distance_px <= self.slack_x_px else len(self.rise_by_tick)
+        else:
+            first = max(0, math.ceil((distance_px - self.slack_x_px) / self.step_px - 1e-9))
+        if first >= len(self.rise_by_tick):
+            return -math.inf
+        return self.rise_by_tick[first] + self.extra_rise_px
+
+    @property
+    def reach_x_px(self) -> float:
+        return self.step_px * self.air_ticks_to_depth + self.slack_x_px
+
+
+def envelope_of(level: Level, tuning: Tuning) -> Envelope | None:
+    """The envelope for ``level`` played with ``tuning``; None when gravity does not bring a
+    jump back down (then no bound on the reach can be given)."""
+    if tuning.gravity_px_s2 <= 0 or tuning.max_fall_speed_px_s <= 0:
+        return None
+    rise = jump_rise(tuning)
+    if rise[-1] >= 0:  # never came back down within the ticks looked at
+        return None
+    y, heights = -rise[-1], list(rise)  # carry on down to FALL_DEPTH_PX below take-off
+    vy = (heights[-2] - heights[-1]) / tuning.tick_s
+    while y < FALL_DEPTH_PX + SLACK_PX and len(heights) < MAX_AIR_TICKS:
+        vy = min(vy + tuning.gravity_px_s2 * tuning.tick_s, tuning.max_fall_speed_px_s)
+        y += vy * tuning.tick_s
+        heights.append(-y)
+    coyote = tuning.coyote_ticks + 1
+    # At tick k since leaving the ground the jump may have started up to ``coyote`` ticks
+    # late (the feet on or below take-off until then).
+    at_tick = [max(0.0 if k < late else heights[k - late] if k - late < len(heights)
+                   else -math.inf for late in range(coyote + 1))
+               for k in range(len(heights) + coyote)]
+    # A slower run reaches the same sideways distance later: the best at that tick or after.
+    for k in range(len(at_tick) - 2, -1, -1):
+        at_tick[k] = max(at_tick[k], at_tick[k + 1])
+    lift = max((p.speed_px_s * tuning.tick_s for p in level.platforms), default=0.0)
+    enemy = 0.0
+    if level.enemies:
+        enemy = max(e.box.h for e in level.enemies) + SLACK_PX
+        if any(e.kind == "hopper" for e in level.enemies):
+            hop = Tuning(jump_speed_px_s=tuning.hopper_jump_speed_px_s,
+                         gravity_px_s2=tuning.gravity_px_s2,
+                         max_fall_speed_px_s=tuning.max_fall_speed_px_s)
+            enemy += max(jump_rise(hop))
+    falling = fall_speed_after(tuning, FALL_DEPTH_PX)
+    grid = level.grid
+    sideways = (grid.cols if falling <= 0 else
+                max(1, math.ceil(tuning.run_speed_px_s / falling * grid.tile_h / grid.tile_w)))
+    return Envelope(tuple(at_tick), tuning.run_speed_px_s * tuning.tick_s,
+                    tuning.corner_correction_px + SLACK_PX, lift + enemy + SLACK_PX,
+                    len(at_tick), sideways)
+
+
+def _closed_cells(grid: TileGrid) -> set[Cell]:
+    """Cells wholly filled by one Solid tile shape."""
+    return {(s.col, s.row) for s in grid.shapes()
+            if s.kind is TileKind.SOLID and s.box.w >= grid.tile_w and s.box.h >= grid.tile_h}
+
+
+def _feet_cell(grid: TileGrid, x: float, feet_y: float) -> Cell:
+    return math.floor(x / grid.tile_w), math.floor((feet_y - SLACK_PX) / grid.tile_h)
+
+
+def target_cells(level: Level, body: Box) -> set[Cell]:
+    """The cells the middle of the feet is in when the body touches an Exit."""
+    grid = level.grid
+    cells: set[Cell] = set()
+    for goal in level.exits:
+        left, right = goal.left - body.w / 2 - SLACK_PX, goal.right + body.w / 2 + SLACK_PX
+        top, bottom = goal.top - SLACK_PX, goal.bottom + body.h + SLACK_PX
+        for col in range(math.floor(left / grid.tile_w), math.floor(right / grid.tile_w) + 1):
+            for row in range(math.floor(top / grid.tile_h),
+                             math.floor(bottom / grid.tile_h) + 1):
+                cells.add((col, row))
+    return cells
+
+
+@dataclass(frozen=True)
+class Start:
+    """Where the player (re)starts, with the columns whose crossing makes it count."""
+
+    box: Box
+    columns: frozenset[int]  # empty: the spawn, counted from the start
+
+
+def starts(world: World) -> list[Start]:
+    """The spawn, then each checkpoint's respawn place, found as the world finds it."""
+    level, grid = world.level, world.level.grid
+    found = [Start(world.spawn, frozenset())]
+    w, h = level.spawn.w, level.spawn.h
+    for flag in level.checkpoints:
+        place = nearest_free_place(world.solids, Box(flag.x + (flag.w - w) / 2,
+                                                     flag.bottom - h, w, h))
+        first = math.floor((flag.left - w) / grid.tile_w)
+        last = math.floor((flag.right + w) / grid.tile_w)
+        found.append(Start(place, frozenset(range(first, last + 1))))
+    return found
+
+
+@dataclass
+class Reach:
+    """What a fill reached: the cells, and whether it touched an Exit."""
+
+    cells: set[Cell]
+    touches_exit: bool
+    targets: set[Cell]
+
+    def nearest_to_exit(self) -> Cell | None:
+        """The reached cell closest (as the crow flies) to an Exit's cells."""
+        if not self.cells or not self.targets:
+            return None
+        return min(sorted(self.cells),
+                   key=lambda c: min(math.dist(c, t) for t in self.targets))
+
+
+def _in_map(grid: TileGrid, cell: Cell, sky_rows: int) -> bool:
+    return 0 <= cell[0] < grid.cols and -sky_rows <= cell[1] < grid.rows
+
+
+def _flood(world: World, fill: _Fill) -> Reach:
+    """Run ``fill`` from the spawn, adding each checkpoint's start once its columns are met
+    (a flag counts when the player passes it)."""
+    found = starts(world)
+    pending = found[1:]
+    fill.seed(found[0].box, _standing(world, found[0].box))
+    while True:
+        reached = fill.run()
+        columns = {col for col, _ in reached}
+        woken = [start for start in pending if columns & start.columns]
+        if not woken:
+            break
+        for start in woken:
+            pending.remove(start)
+            fill.seed(start.box, _standing(world, start.box))
+    targets = {cell for cell in target_cells(world.level, world.spawn) if fill.open(cell)}
+    return Reach(reached, bool(reached & targets), targets)
+
+
+def _standing(world: World, box: Box) -> bool:
+    return ground_under(world.solids, box) is not None
+
+
+class _Fill:
+    """A fill that can be seeded again and run on (the base: an open-cell flood)."""
+
+    def __init__(self, level: Level, sky_rows: int) -> None:
+        self.level = level
+        self.grid = level.grid
+        self.closed = _closed_cells(level.grid)
+        self.sky_rows = sky_rows
+        self.seen: set[Cell] = set()
+        self.queue: deque[Cell] = deque()
+
+    def open(self, cell: Cell) -> bool:
+        return _in_map(self.grid, cell, self.sky_rows) and cell not in self.closed
+
+    def seed(self, box: Box, standing: bool) -> None:
+        del standing  # an open-cell flood ignores gravity
+        cell = _feet_cell(self.grid, box.x + box.w / 2, box.bottom)
+        if cell not in self.seen:
+            self.seen.add(cell)
+            self.queue.append(cell)
+
+    def run(self) -> set[Cell]:
+        while self.queue:
+            col, row = self.queue.popleft()
+            for near in ((col + 1, row), (col - 1, row), (col, row + 1), (col, row - 1)):
+                if near not in self.seen and self.open(near):
+                    self.seen.add(near)
+                    self.queue.append(near)
+        return set(self.seen)
+
+
+def open_path(world: World, opened: frozenset[Cell] = frozenset()) -> Reach:
+    """Cells joined to the spawn by open cells (4 neighbours), gravity ignored; the sky above
+    the map is open along its whole width. ``opened``: closed cells to count as open (to ask
+    whether some tiles are what closes the way)."""
+    fill = _Fill(world.level, sky_rows=2)
+    fill.closed -= opened
+    return _flood(world, fill)
+
+
+class _JumpFill(_Fill):
+    """The jump envelope's fill: launches, arcs within the envelope, and falls."""
+
+    def __init__(self, level: Level, envelope: Envelope, body: Box) -> None:
+        grid = level.grid
+        launches = self._launch_heights(level, body)
+        top = min([row for _, row in launches] + [0])
+        rise_rows = math.ceil(max(envelope.rise_by_tick) + envelope.extra_rise_px) // max(
+            1, grid.tile_h) + 2
+        super().__init__(level, sky_rows=max(0, -top) + rise_rows)
+        self.envelope = envelope
+        self.launch_y = launches  # cell -> the highest feet height resting in it
+        self.launched: set[Cell] = set()
+        self.moves: dict[Cell, set[Cell]] = {}  # every step from cell to cell the fill made
+        self.falling: set[tuple[int, int, bool]] = set()
+        self.fall_queue: deque[tuple[int, int, bool]] = deque()
+        self.platform_cells = self._platform_groups(level, body)
+
+    @staticmethod
+    def _launch_heights(level: Level, body: Box) -> dict[Cell, float]:
+        grid = level.grid
+        heights: dict[Cell, float] = {}
+
+        def rest(left: float, right: float, top: float) -> None:
+            row = math.floor((top - SLACK_PX) / grid.tile_h)
+            first = math.floor((left - body.w / 2) / grid.tile_w)
+            last = math.floor((right + body.w / 2) / grid.tile_w)
+            for col in range(first, last + 1):
+                if heights.get((col, row), math.inf) > top:
+                    heights[(col, row)] = top
+
+        closed = _closed_cells(grid)
+        for shape in grid.shapes():
+            buried = (shape.box.top == shape.row * grid.tile_h
+                      and (shape.col, shape.row - 1) in closed)  # a wall's inside
+            if shape.kind is not TileKind.HAZARD and not buried:
+                rest(shape.box.left, shape.box.right, shape.box.top)
+        for spec in level.platforms:
+            for x, y in _along(spec.path.legs, spec.path.points, min(grid.tile_w, grid.tile_h) / 4):
+                rest(x, x + spec.width_px, y)
+        for enemy in level.enemies:  # an enemy stands on some floor: its head is covered
+            rest(enemy.box.left, enemy.box.right, enemy.box.top)  # by extra_rise_px elsewhere
+        return heights
+
+    @staticmethod
+    def _platform_groups(level: Level, body: Box) -> list[set[Cell]]:
+        """For each platform, every cell its riders' feet can be carried through."""
+        grid = level.grid
+        groups: list[set[Cell]] = []
+        for spec in level.platforms:
+            cells: set[Cell] = set()
+            for x, y in _along(spec.path.legs, spec.path.points, min(grid.tile_w, grid.tile_h) / 4):
+                row = math.floor((y - SLACK_PX) / grid.tile_h)
+                for col in range(math.floor((x - body.w / 2) / grid.tile_w),
+                                 math.floor((x + spec.width_px + body.w / 2) / grid.tile_w) + 1):
+                    for near_row in (row - 1, row, row + 1):  # pushed up or down a little
+                        cells.add((col, near_row))
+            groups.append(cells)
+        return groups
+
+    def seed(self, box: Box, standing: bool) -> None:
+        """Start at ``box``: a jump from where it stands, or a fall from where it floats."""
+        cell = _feet_cell(self.grid, box.x + box.w / 2, box.bottom)
+        self.seen.add(cell)
+        if standing:
+            self.launch_y[cell] = min(self.launch_y.get(cell, math.inf), box.bottom)
+            self.queue.append(cell)
+        else:
+            self._arc(cell, box.bottom, max_rise=0.0)
+
+    def _reach_cell(self, cell: Cell) -> None:
+        if cell not in self.seen:
+            self.seen.add(cell)
+            if cell in self.launch_y:
+                self.queue.append(cell)
+            for group in self.platform_cells:
+                if cell in group:
+                    for carried in group:
+                        if carried not in self.seen and self.open(carried):
+                            self.seen.add(carried)
+                            if carried in self.launch_y:
+                                self.queue.append(carried)
+
+    def run(self) -> set[Cell]:
+        while self.queue or self.fall_queue:
+            while self.queue:
+                cell = self.queue.popleft()
+                if cell not in self.launched and cell in self.launch_y:
+                    self.launched.add(cell)
+                    self._arc(cell, self.launch_y[cell])
+            while self.fall_queue:
+                self._fall_step(self.fall_queue.popleft())
+        return set(self.seen)
+
+    def _arc(self, start: Cell, feet_y: float, max_rise: float = math.inf) -> None:
+        """Every open cell a jump from ``start`` (feet at ``feet_y``) could pass through,
+        rising at most ``max_rise`` (0: a fall from rest)."""
+        grid, env = self.grid, self.envelope
+        tile_w, tile_h = grid.tile_w, grid.tile_h
+        x_lo, x_hi = start[0] * tile_w, (start[0] + 1) * tile_w  # the feet's x is in here
+        local: set[Cell] = {start}
+        queue: deque[Cell] = deque([start])
+        while queue:
+            col, row = queue.popleft()
+            for dc in (-1, 0, 1):
+                for dr in (-1, 0, 1):
+                    near = (col + dc, row + dr)
+                    if (dc == 0 and dr == 0) or not self.open(near):
+                        continue
+                    c_lo, c_hi = near[0] * tile_w, (near[0] + 1) * tile_w
+                    distance = max(0.0, c_lo - x_hi, x_lo - c_hi)
+                    lowest_y = (near[1] + 1) * tile_h  # the cell's bottom: the least rise
+                    if lowest_y <= feet_y - min(max_rise, env.rise_at(distance)):
+                        continue  # wholly above what a jump reaches at that distance
+                    self.moves.setdefault((col, row), set()).add(near)
+                    if near in local:
+                        continue
+                    local.add(near)
+                    depth = near[1] * tile_h - feet_y  # how far below take-off, at least
+                    if depth >= FALL_DEPTH_PX:
+                        self._start_fall(near)
+                    elif distance > env.reach_x_px:
+                        continue
+                    else:
+                        queue.append(near)
+        for cell in local:
+            self._reach_cell(cell)
+
+    def _start_fall(self, cell: Cell) -> None:
+        state = (cell[0], cell[1], False)
+        if state not in self.falling:
+            self.falling.add(state)
+            self.fall_queue.append(state)
+
+    def _fall_step(self, state: tuple[int, int, bool]) -> None:
+        """Falling: one row down to any of three cells, or one sideways step per row."""
+        col, row, stepped = state
+        self._reach_cell((col, row))
+        sideways = self.envelope.sideways_cells_per_row
+        moves: list[tuple[int, int, bool]] = [(col + dc, row + 1, False)
+                                              for dc in range(-sideways, sideways + 1)]
+        if not stepped:
+            moves += [(col + dc, row, True) for dc in range(-sideways, sideways + 1) if dc]
+        for near in moves:
+            if not self.open((near[0], near[1])):
+                continue
+            if abs(near[0] - col) > 1:  # a wider step must pass the cells between
+                between = range(min(col, near[0]) + 1, max(col, near[0]))
+                if any(not self.open((c, near[1])) for c in between):
+                    continue
+            self.moves.setdefault((col, row), set()).add((near[0], near[1]))
+            if near in self.falling:
+                continue
+            self.falling.add(near)
+            self.fall_queue.append(near)
+
+
+def _along(legs: Iterable[tuple[tuple[float, float], tuple[float, float]]],
+           points: tuple[tuple[float, float], ...], step: float,
+           ) -> Iterator[tuple[float, float]]:
+    """Points along a path no more than ``step`` apart (its corners included)."""
+    yield from points
+    for (x0, y0), (x1, y1) in legs:
+        count = max(1, math.ceil(math.dist((x0, y0), (x1, y1)) / max(step, 1e-9)))
+        for i in range(1, count):
+            yield x0 + (x1 - x0) * i / count, y0 + (y1 - y0) * i / count
+
+
+def steps_to_exit(world: World) -> dict[Cell, int] | None:
+    """For every cell the fill reached, the fewest of its steps (cell to cell, as the fill
+    moved) to a cell where the player touches an Exit; a cell from which no step leads
+    there is left out. None when the tuning gives no bound. A guide for the search: a place
+    left out is one from which, by the proof above, no route can go on to an Exit."""
+    envelope = envelope_of(world.level, world.tuning)
+    if envelope is None:
+        return None
+    fill = _JumpFill(world.level, envelope, world.spawn)
+    reach = _flood(world, fill)
+    back: dict[Cell, list[Cell]] = {}
+    for cell, nears in fill.moves.items():
+        for near in nears:
+            back.setdefault(near, []).append(cell)
+    for number, group in enumerate(fill.platform_cells):  # a ride: any of its cells to any
+        ride = (-1 - number, RIDE_ROW)  # a node standing for the whole ride
+        back[ride] = sorted(group & reach.cells)
+        for cell in back[ride]:
+            back.setdefault(cell, []).append(ride)
+    steps = {cell: 0 for cell in reach.targets}
+    queue = deque(sorted(reach.targets))
+    while queue:
+        cell = queue.popleft()
+        for before in back.get(cell, ()):
+            if before not in steps:
+                steps[before] = steps[cell] + 1
+                queue.append(before)
+    return steps
+
+
+def reachable(world: World) -> Reach | None:
+    """The jump envelope's fill from the spawn (and each checkpoint's respawn once met), for
+    the world's level and tuning; None when the tuning gives no bound (a jump that never
+    comes down)."""
+    envelope = envelope_of(world.level, world.tuning)
+    if envelope is None:
+        return None
+    return _flood(world, _JumpFill(world.level, envelope, world.spawn))

@@ -1,0 +1,157 @@
+"""Can this map be won? Three honest answers: solved, impossible, or not decided.
+
+Where it sits: between the checker's command line (:mod:`game.levels.__main__`) and the
+two tools that answer, :mod:`game.levels.reachable` (which can prove a map impossible) and
+:mod:`game.levels.solver` (which can prove it solved, by finding a route that replays).
+
+What it teaches: keep what was *proven* apart from what was merely *not found*.
+
+* **Solved**: a route reaches an Exit when the game replays it (the solver's, or the
+  designer's own recorded win given with ``--proof``).
+* **Impossible**: no open path of cells joins the spawn and an Exit, or the Exit lies
+  outside everything the player's jumps could touch. Both are over-approximations, so they
+  never call a winnable map impossible.
+* **Not decided**: the search spent its budget (or its seconds) without a route, and
+  nothing proved the map impossible. That is said as such, with the bound, the work done,
+  the furthest place reached and how to search further; it never reads as solved.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from enum import Enum
+from pathlib import Path
+
+from game.levels.reachable import Cell, Reach, open_path, reachable
+from game.levels.solver import Effort, Solution, solve
+from game.levels.wall_layers import closed_cells_by_layer
+from game.sim.campaign import Campaign
+from game.sim.inputs import InputScript
+from game.sim.level import Level
+from game.sim.world import World
+
+PROOF_GRACE_TICKS = 60 * 60  # a recorded win may end with keys held: play on this long
+
+
+class Kind(Enum):
+    SOLVED = "solved"
+    IMPOSSIBLE = "impossible"
+    UNDECIDED = "not decided"
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """One map's answer: its kind, the tile it points at, what was found and what to do."""
+
+    kind: Kind
+    tile: Cell | None
+    finding: str
+    advice: str
+    solution: Solution | None = None
+    reach: Reach | None = None
+
+
+def _cell_of(level: Level, x: float, y: float) -> Cell:
+    return math.floor(x / level.grid.tile_w), math.floor(y / level.grid.tile_h)
+
+
+def prove_impossible(level: Level) -> Verdict | None:
+    """An IMPOSSIBLE verdict if the cells or the reach show no route can exist, else None."""
+    world = World(level)
+    if not level.exits:
+        return None
+    sealed = open_path(world)
+    if not sealed.touches_exit:
+        culprit = _closing_layer(world)
+        blame = (f"; without the Solid tiles of layer '{culprit}' there would be a way"
+                 if culprit is not None else "")
+        fix = (f"clear the Solid tiles of layer '{culprit}' in the way (or give them another "
+               "class)" if culprit is not None else
+               "open a way through the Solid tiles between here and the Exit")
+        return Verdict(Kind.IMPOSSIBLE, sealed.nearest_to_exit(),
+                       "impossible: no open path joins the spawn and an Exit; Solid tiles "
+                       f"close every way{blame}; this is the nearest open place to an Exit",
+                       fix, reach=sealed)
+    reach = reachable(world)
+    if reach is not None and not reach.touches_exit:
+        return Verdict(Kind.IMPOSSIBLE, reach.nearest_to_exit(),
+                       "impossible: the Exit lies outside everything the player's jumps can "
+                       "touch; this is the nearest place they reach",
+                       "lower the ledges or narrow the gaps on the way (see the player's "
+                       "reach in the summary), or move the Exit",
+                       reach=reach)
+    return None
+
+
+def _closing_layer(world: World) -> str | None:
+    """The tile layer whose Solid tiles alone close the way, if taking them away opens it
+    (of several, the one with the fewest such tiles: a stray wall, not the whole ground)."""
+    layers = closed_cells_by_layer(world.level.path) if world.level.path.is_file() else []
+    openers: list[tuple[int, int, str]] = []
+    for number, (name, cells) in enumerate(layers):
+        others: set[Cell] = set()
+        for other, (_, other_cells) in enumerate(layers):
+            if other != number:
+                others |= other_cells
+        own = frozenset(cells - others)
+        if own and open_path(world, own).touches_exit:
+            openers.append((len(own), number, name))
+    return min(openers)[2] if openers else None
+
+
+def judge(level: Level, effort: Effort, command: str = "python -m game.levels") -> Verdict:
+    """Prove ``level`` impossible, else search it: solved, or honestly not decided."""
+    impossible = prove_impossible(level)
+    if impossible is not None:
+        return impossible
+    solution = solve(level, effort)
+    if solution.found:
+        return Verdict(Kind.SOLVED, None, f"solved: a route reaches an Exit at tick "
+                       f"{solution.exit_tick}", "", solution)
+    col, row = solution.furthest_tile()
+    if solution.timed_out and effort.seconds is not None:
+        bound = f"its {effort.seconds:g} s"
+    elif solution.out_of_budget:
+        bound = f"its budget of {effort.budget:,} moves"
+    else:
+        bound = "every move its beams kept"
+    more = max(effort.budget * 4, solution.moves_tried * 4)
+    return Verdict(
+        Kind.UNDECIDED, (col, row),
+        f"not decided: the search found no route within {bound} ({solution.moves_tried:,} "
+        f"moves tried, {solution.states:,} states kept) and nothing proves the map "
+        "impossible; this is the furthest place reached",
+        f"search further with --budget {more}, see how far it got with {command} solve "
+        f"MAP --picture route.png, or prove it winnable with --proof SCRIPT "
+        "(a win recorded with python -m game --record)",
+        solution)
+
+
+def replay_proof(level: Level, script: InputScript) -> tuple[bool, int]:
+    """Play a recorded script on ``level`` as the game does; did it finish the level, and at
+    which tick?"""
+    campaign = Campaign(level.path, loader=lambda _path: level)
+    last = script.events[-1].tick if script.events else 0
+    for tick in range(last + PROOF_GRACE_TICKS):
+        campaign.tick(script.held_at(tick))
+        if campaign.levels_completed:
+            return True, tick + 1
+        if campaign.outcome.value != "running":
+            break
+    return False, campaign.ticks
+
+
+def judge_proof(level: Level, script_path: Path) -> Verdict:
+    """SOLVED when the recorded script wins the level; else a finding about the script."""
+    script = InputScript.load(script_path)
+    won, ticks = replay_proof(level, script)
+    if won:
+        return Verdict(Kind.SOLVED, None, f"solved: the recorded win {script_path.name} "
+                       f"reaches an Exit at tick {ticks}", "")
+    x, y = World(level).player.box.center
+    return Verdict(Kind.UNDECIDED, _cell_of(level, x, y),
+                   f"not decided: the recorded script {script_path.name} does not finish the "
+                   f"level (played for {ticks} ticks)",
+                   "record the win again on this version of the map with python -m game "
+                   "--level MAP --record SCRIPT, or leave out --proof to search")
