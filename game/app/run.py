@@ -8,7 +8,8 @@ any of them.
 A frame in the window (:mod:`game.app.window`), in order:
 
 1. **Events**: quit, pads plugged in or out, F1 (debug overlay), F2-F4 (with the overlay
-   on: freeze, one tick, quarter speed; :mod:`game.app.stepping`), F11 (fullscreen), and
+   on: freeze, one tick, quarter speed; :mod:`game.app.stepping`), F5 (with the overlay on:
+   its panel compact, full or hidden), F11 (fullscreen), and
    menu presses from keys and pads (:mod:`game.app.menus`).
 2. **Ticks**: the fixed-step loop (:mod:`game.sim.fixed_step`) says how many 1/60 s ticks are
    due (none while frozen, one per F3); each one reads the held actions (keyboard and pads
