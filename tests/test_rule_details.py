@@ -10,10 +10,11 @@ from __future__ import annotations
 import itertools
 import math
 
+import pygame
 import pytest
 
 # Everything the tests use from the game, in one place.
-from game.collision.aabb import RECT_MAX, RECT_MIN, Box
+from game.collision.aabb import RECT_MAX, RECT_MIN, Box, rects_overlap
 from game.sim.inputs import NOTHING, Action, Actions
 from game.sim.movement import (
     Hit,
@@ -64,6 +65,28 @@ def test_boxes_under_a_pixel_wide_still_touch_and_empty_boxes_never_do() -> None
     assert thin.touches(Box(0.5, 0, 4, 4)) and Box(0.5, 0, 4, 4).touches(thin)
     for empty in (Box(0, 0, 0, 4), Box(0, 0, 4, 0)):
         assert not empty.touches(Box(4, 0, 4, 4)) and not Box(4, 0, 4, 4).touches(empty)
+
+
+def test_a_box_has_the_four_numbers_of_its_rect_and_rects_overlap_by_pygames_rule() -> None:
+    assert Box.from_rect(pygame.Rect(3, 4, -5, 6)) == Box(3, 4, -5, 6)
+    assert rects_overlap(Box(10, 10, -10, -10), Box(2, 2, 4, 4))
+    assert not rects_overlap(Box(10, 10, -10, -10), Box(10, 2, 4, 4))
+
+
+@pytest.mark.parametrize("field", range(4))
+def test_a_box_with_any_field_not_finite_says_so_and_refuses_to_become_a_rect(
+        field: int) -> None:
+    assert Box(1, 2, 3, 4).is_finite()
+    for bad in (math.nan, math.inf, -math.inf):
+        box = Box(*(bad if i == field else 1.0 for i in range(4)))
+        assert not box.is_finite()
+        with pytest.raises(ValueError, match="non-finite box"):
+            box.to_rect()
+
+
+def test_a_box_of_no_width_touches_nothing_even_flush_against_it() -> None:
+    line, tile = Box(4, 0, 0, 4), Box(0, 0, 4, 4)
+    assert not line.touches(tile) and not tile.touches(line)
 
 
 def test_boxes_apart_or_touching_have_no_penetration() -> None:
@@ -164,10 +187,19 @@ def test_the_corner_slide_takes_a_clip_of_exactly_1_px() -> None:
     assert slid is not None and slid[0].box.x == 36
 
 
+def test_the_corner_slide_takes_a_clip_of_exactly_1_px_on_the_right() -> None:
+    grid = grid_of((3, 2, Box(48, 32, 16, 16), SOLID))
+    slid = slide_past_ceiling_corner(grid, Box(63, 50, 12, 14), -10.0, 4.0)
+    assert slid is not None and slid[0].box.x == 64
+
+
 def test_the_corner_slide_needs_a_rise_higher_than_the_bump() -> None:
-    grid = grid_of((3, 2, Box(48, 32, 16, 16), SOLID), (2, 2, Box(32, 40, 16, 8), SOLID))
-    assert move_y(grid, Box(36, 50, 12, 14), -10.0).box.top == 48  # as low past the corner
-    assert slide_past_ceiling_corner(grid, Box(39, 50, 12, 14), -10.0, 4.0) is None
+    """Past the corner (3 px right) another ceiling hangs just as low: no slide."""
+    grid = grid_of((2, 2, Box(32, 32, 16, 16), SOLID), (3, 2, Box(48, 40, 16, 8), SOLID))
+    bump = move_y(grid, Box(45, 50, 12, 14), -10.0)
+    assert bump.hit is not None and bump.hit.shape is not None and bump.hit.shape.col == 2
+    assert move_y(grid, Box(48, 50, 12, 14), -10.0).box.top == bump.box.top == 48
+    assert slide_past_ceiling_corner(grid, Box(45, 50, 12, 14), -10.0, 4.0) is None
 
 
 # --- Nearest free place (a spawn inside a wall) --------------------------------------------
@@ -225,9 +257,12 @@ def test_shapes_with_no_area_are_kept_for_drawing_but_never_collide() -> None:
     assert grid.shapes_at(0, 0) == () and grid.shapes_at(-1, 0) == ()
     assert grid.shapes_at(10, 0) == ()
     assert grid.shapes_at(0, 4) == () and grid.shapes_at(0, -1) == ()
-    assert list(grid.shapes()) == [tile, line, flat]
+    first = TileShape(Box(0, 16, 16, 16), SOLID, 0, 1)
+    grid.put(0, 1, first)
+    assert grid.shapes_at(0, 1) == (first,) and grid.shapes_at(10, 0) == ()
+    assert list(grid.shapes()) == [tile, first, line, flat]
     with_movers = grid.with_movers(layer=None)  # type: ignore[arg-type]
-    assert list(with_movers.shapes()) == [tile, line, flat]
+    assert list(with_movers.shapes()) == [tile, first, line, flat]
     assert with_movers.width_px == 160 and with_movers.height_px == 64
 
 
@@ -245,6 +280,9 @@ def test_the_cells_covering_a_region_follow_strict_overlap_and_stay_in_the_map()
     assert grid.block_covering(15.5, 16, 16.5, 32.5) == (0, 1, 1, 2)
     assert grid.block_covering(-40, -40, 20, 10) == (0, 1, 0, 0)
     assert grid.block_covering(0, 0, math.nan, 10) is None
+    assert grid.block_covering(0, 5, 10, 5) is None              # no height
+    assert grid.block_covering(170, 0, 180, 10) is None          # right of the map only
+    assert grid.block_covering(0, 70, 10, 80) is None            # below the map only
 
 
 def test_a_query_counts_the_cells_it_visits_and_the_shapes_it_tests() -> None:
