@@ -430,6 +430,13 @@ def test_a_level_that_starts_on_the_ground_jumps_on_the_first_tick() -> None:
     assert any(e.kind is EventKind.JUMP for e in world.step(JUMP))
 
 
+def test_a_level_that_starts_on_a_one_way_tile_jumps_on_the_first_tick() -> None:
+    world = World(level_from_ascii(["     ", "     ", "-----"],
+                                   spawn=Box(16, 2 * T - 14, 12, 14)), TUNING)
+    assert world.player.on_ground and not world.player.dropping_through
+    assert any(e.kind is EventKind.JUMP for e in world.step(JUMP))
+
+
 def test_a_cut_jump_is_cut_once() -> None:
     world = World(level_from_ascii(["     "] * 9 + ["#####"], spawn=Box(16, 9 * T - 14, 12, 14)),
                   TUNING)
