@@ -84,6 +84,12 @@ def test_a_box_with_any_field_not_finite_says_so_and_refuses_to_become_a_rect(
             box.to_rect()
 
 
+@pytest.mark.parametrize("empty", [Box(5, 2, 0, 6), Box(2, 5, 6, 0)])
+def test_a_box_of_no_width_or_height_overlaps_nothing_even_inside_another(empty: Box) -> None:
+    around = Box(0, 0, 10, 10)
+    assert not empty.overlaps(around) and not around.overlaps(empty)
+
+
 def test_a_box_of_no_width_touches_nothing_even_flush_against_it() -> None:
     line, tile = Box(4, 0, 0, 4), Box(0, 0, 4, 4)
     assert not line.touches(tile) and not tile.touches(line)
