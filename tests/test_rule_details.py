@@ -1,0 +1,521 @@
+"""The smaller rules of the collision path and of the player's feel, one test each.
+
+The edges of the promised numbers are in ``test_edges.py``; these pin the rest of what the
+sweeps, the tile grid, the boxes, the tunables and the player do, so that mutation testing
+(README, "Mutation testing") finds no rule that a change could break unnoticed.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import pygame
+import pytest
+
+# Everything the tests use from the game, in one place.
+from game.collision.aabb import RECT_MAX, RECT_MIN, Box, rects_overlap
+from game.sim.inputs import NOTHING, Action, Actions
+from game.sim.movement import (
+    Hit,
+    Move,
+    Side,
+    move_x,
+    move_y,
+    nearest_free_place,
+    penetration_depth,
+    slide_past_ceiling_corner,
+    touching,
+)
+from game.sim.player import Player, approach
+from game.sim.tilegrid import Query, QueryLog, TileGrid, TileKind, TileShape
+from game.sim.tuning import Tuning
+from game.sim.world import EventKind, World
+from tests.maps import level_from_ascii
+
+T = 16
+SOLID, ONE_WAY, HAZARD = TileKind.SOLID, TileKind.ONE_WAY, TileKind.HAZARD
+RIGHT: Actions = frozenset({Action.RIGHT})
+LEFT: Actions = frozenset({Action.LEFT})
+JUMP: Actions = frozenset({Action.JUMP})
+TUNING = Tuning()
+
+
+def grid_of(*shapes: tuple[int, int, Box, TileKind], cols: int = 10, rows: int = 10,
+            ) -> TileGrid:
+    grid = TileGrid(cols, rows, T, T)
+    for col, row, box, kind in shapes:
+        grid.put(col, row, TileShape(box, kind, col, row))
+    return grid
+
+
+def floor_grid() -> TileGrid:
+    return grid_of(*((c, 5, Box(c * T, 5 * T, T, T), SOLID) for c in range(10)))
+
+
+# --- Box ----------------------------------------------------------------------------------
+
+def test_normalizing_keeps_a_box_of_positive_size_under_one_pixel() -> None:
+    assert Box(3, 4, 0.5, 0.5).normalized() == Box(3, 4, 0.5, 0.5)
+    assert Box(3, 4, -0.5, -0.5).normalized() == Box(2.5, 3.5, 0.5, 0.5)
+
+
+def test_boxes_under_a_pixel_wide_still_touch_and_empty_boxes_never_do() -> None:
+    thin = Box(0, 0, 0.5, 0.5)
+    assert thin.touches(Box(0.5, 0, 4, 4)) and Box(0.5, 0, 4, 4).touches(thin)
+    for empty in (Box(0, 0, 0, 4), Box(0, 0, 4, 0)):
+        assert not empty.touches(Box(4, 0, 4, 4)) and not Box(4, 0, 4, 4).touches(empty)
+
+
+def test_a_box_has_the_four_numbers_of_its_rect_and_rects_overlap_by_pygames_rule() -> None:
+    assert Box.from_rect(pygame.Rect(3, 4, -5, 6)) == Box(3, 4, -5, 6)
+    assert rects_overlap(Box(10, 10, -10, -10), Box(2, 2, 4, 4))
+    assert not rects_overlap(Box(10, 10, -10, -10), Box(10, 2, 4, 4))
+
+
+@pytest.mark.parametrize("field", range(4))
+def test_a_box_with_any_field_not_finite_says_so_and_refuses_to_become_a_rect(
+        field: int) -> None:
+    assert Box(1, 2, 3, 4).is_finite()
+    for bad in (math.nan, math.inf, -math.inf):
+        box = Box(*(bad if i == field else 1.0 for i in range(4)))
+        assert not box.is_finite()
+        with pytest.raises(ValueError, match="non-finite box"):
+            box.to_rect()
+
+
+@pytest.mark.parametrize("empty", [Box(5, 2, 0, 6), Box(2, 5, 6, 0)])
+def test_a_box_of_no_width_or_height_overlaps_nothing_even_inside_another(empty: Box) -> None:
+    around = Box(0, 0, 10, 10)
+    assert not empty.overlaps(around) and not around.overlaps(empty)
+
+
+def test_a_box_of_no_width_touches_nothing_even_flush_against_it() -> None:
+    line, tile = Box(4, 0, 0, 4), Box(0, 0, 4, 4)
+    assert not line.touches(tile) and not tile.touches(line)
+
+
+def test_boxes_apart_or_touching_have_no_penetration() -> None:
+    assert Box(0, 0, 10, 10).penetration(Box(20, 20, 5, 5)) == 0.0
+    assert Box(0, 0, 10, 10).penetration(Box(10, 0, 5, 5)) == 0.0
+    assert Box(0, 0, 10, 10).penetration(Box(9.5, 0, 5, 5)) == 0.5
+
+
+@pytest.mark.parametrize("box", [Box(RECT_MIN, RECT_MIN, 0, 0), Box(RECT_MAX, RECT_MAX, 0, 0),
+                                 Box(0, 0, RECT_MAX, RECT_MAX)])
+def test_a_box_whose_edges_are_at_the_limits_of_a_rect_still_becomes_one(box: Box) -> None:
+    assert tuple(box.to_rect()) == tuple(int(v) for v in box)
+
+
+@pytest.mark.parametrize("box", [Box(RECT_MIN - 1, 0, 1, 1), Box(0, RECT_MIN - 1, 1, 1),
+                                 Box(RECT_MAX - 1, 0, 2, 1), Box(0, RECT_MAX - 1, 1, 2),
+                                 Box(RECT_MIN, 0, -1, 1), Box(0, RECT_MIN, 1, -1)])
+def test_a_box_with_an_edge_one_past_the_limits_of_a_rect_is_refused(box: Box) -> None:
+    with pytest.raises(ValueError, match="outside"):
+        box.to_rect()
+
+
+# --- The swept moves ----------------------------------------------------------------------
+
+@pytest.mark.parametrize("step", [math.inf, -math.inf, math.nan])
+def test_a_step_that_is_not_a_finite_number_is_refused_with_its_value(step: float) -> None:
+    grid = floor_grid()
+    for move in (move_x, move_y):
+        with pytest.raises(ValueError, match=f"finite number of pixels, not {step}"):
+            move(grid, Box(0, 0, 12, 14), step)
+
+
+def test_a_move_of_nothing_stays_put_with_no_hit_and_sweeps_only_the_box() -> None:
+    grid, box = floor_grid(), Box(20, 66, 12, 14)
+    for move in (move_x(grid, box, 0.0), move_y(grid, box, 0.0)):
+        assert move.box == box and move.start == box and move.hit is None
+        assert move.swept == box and move.path == box
+
+
+@pytest.mark.parametrize("step", [10.0, -10.0])
+def test_a_move_sweeps_the_start_and_the_box_it_asked_for(step: float) -> None:
+    grid = grid_of(cols=20, rows=20)
+    box = Box(100, 100, 12, 14)
+    x_move, y_move = move_x(grid, box, step), move_y(grid, box, step)
+    assert (x_move.dx, x_move.dy, y_move.dx, y_move.dy) == (step, 0.0, 0.0, step)
+    assert x_move.swept == box.union(box.moved(dx=step))
+    assert y_move.swept == box.union(box.moved(dy=step))
+
+
+def test_a_stopped_move_sweeps_what_it_asked_for_and_travels_only_to_the_wall() -> None:
+    grid = grid_of((5, 6, Box(80, 96, 16, 16), SOLID), cols=20, rows=20)
+    move = move_x(grid, Box(60, 100, 12, 10), 40.0)
+    assert move.box.right == 80
+    assert move.swept == Box(60, 100, 52, 10)
+    assert move.path == Box(60, 100, 20, 10) and move.path_edges == (60, 100, 80, 110)
+    assert repr(move) == f"Move(box={move.box}, hit={move.hit}, start={move.start})"
+
+
+def test_a_body_flush_against_the_right_side_of_the_map_cannot_move_past_it() -> None:
+    grid = grid_of(cols=10, rows=4)
+    move = move_x(grid, Box(148, 0, 12, 14), 1.0)
+    assert move.box.right == 160 and move.hit == Hit(Side.RIGHT, 160, None)
+    assert move_x(grid, Box(0, 0, 12, 14), -1.0).hit == Hit(Side.LEFT, 0, None)
+
+
+def test_touching_lists_the_shapes_of_one_kind_that_overlap_the_box() -> None:
+    spikes = TileShape(Box(40, 84, 8, 8), HAZARD, 2, 5)
+    grid = floor_grid()
+    grid.put(2, 5, spikes)
+    assert touching(grid, Box(36, 78, 12, 14), HAZARD) == [spikes]
+    assert touching(grid, Box(36, 70, 12, 14), HAZARD) == []       # above them
+    assert touching(grid, Box(28, 78, 12, 14), HAZARD) == []       # left of them
+    assert [s.col for s in touching(grid, Box(36, 78, 12, 14), SOLID)] == [2]
+
+
+def test_penetration_depth_is_the_deepest_overlap_with_a_solid() -> None:
+    grid = floor_grid()
+    grid.put(2, 4, TileShape(Box(32, 78, 16, 2), HAZARD, 2, 4))
+    assert penetration_depth(grid, Box(36, 69, 12, 14)) == 3.0
+    assert penetration_depth(grid, Box(36, 66, 12, 14)) == 0.0
+
+
+def test_the_corner_slide_tries_the_smaller_shift_first() -> None:
+    grid = grid_of((3, 2, Box(48, 32, 6, 16), SOLID))
+    slid = slide_past_ceiling_corner(grid, Box(50, 50, 4, 14), -10.0, 6.0)
+    assert slid is not None and slid[0].box.x == 54          # 4 px right, not 6 px left
+
+
+def test_the_corner_slide_takes_the_other_way_when_the_nearer_one_is_walled() -> None:
+    grid = grid_of((3, 2, Box(48, 32, 6, 16), SOLID), (3, 3, Box(57, 48, 4, 16), SOLID))
+    slid = slide_past_ceiling_corner(grid, Box(50, 50, 4, 14), -10.0, 6.0)
+    assert slid is not None and slid[0].box.x == 44
+
+
+def test_the_corner_slide_takes_a_clip_of_exactly_1_px() -> None:
+    grid = grid_of((3, 2, Box(48, 32, 16, 16), SOLID))
+    slid = slide_past_ceiling_corner(grid, Box(37, 50, 12, 14), -10.0, 4.0)
+    assert slid is not None and slid[0].box.x == 36
+
+
+def test_the_corner_slide_takes_a_clip_of_exactly_1_px_on_the_right() -> None:
+    grid = grid_of((3, 2, Box(48, 32, 16, 16), SOLID))
+    slid = slide_past_ceiling_corner(grid, Box(63, 50, 12, 14), -10.0, 4.0)
+    assert slid is not None and slid[0].box.x == 64
+
+
+def test_the_corner_slide_needs_a_rise_higher_than_the_bump() -> None:
+    """Past the corner (3 px right) another ceiling hangs just as low: no slide."""
+    grid = grid_of((2, 2, Box(32, 32, 16, 16), SOLID), (3, 2, Box(48, 40, 16, 8), SOLID))
+    bump = move_y(grid, Box(45, 50, 12, 14), -10.0)
+    assert bump.hit is not None and bump.hit.shape is not None and bump.hit.shape.col == 2
+    assert move_y(grid, Box(48, 50, 12, 14), -10.0).box.top == bump.box.top == 48
+    assert slide_past_ceiling_corner(grid, Box(45, 50, 12, 14), -10.0, 4.0) is None
+
+
+# --- Nearest free place (a spawn inside a wall) --------------------------------------------
+
+def test_a_box_in_a_free_place_stays_where_it_is() -> None:
+    box = Box(40, 66, 12, 14)
+    assert nearest_free_place(floor_grid(), box) is box
+
+
+def test_a_box_sunk_into_a_floor_comes_up_onto_it() -> None:
+    assert nearest_free_place(floor_grid(), Box(40, 70.5, 12, 14)) == Box(40, 66, 12, 14)
+
+
+def test_a_box_in_a_wall_goes_out_on_the_nearer_side() -> None:
+    grid = grid_of(*((3, r, Box(48, r * T, T, T), SOLID) for r in range(10)))
+    assert nearest_free_place(grid, Box(50, 40, 12, 14)) == Box(36, 40, 12, 14)
+    assert nearest_free_place(grid, Box(54, 40, 12, 14)) == Box(64, 40, 12, 14)
+
+
+def test_a_tie_goes_to_the_higher_then_the_more_left_place() -> None:
+    grid = grid_of((3, 3, Box(48, 48, 16, 16), SOLID))
+    assert nearest_free_place(grid, Box(50, 50, 12, 12)) == Box(50, 36, 12, 12)  # up 14 < 16
+    # A 4x4 box in the middle of a 16x16 block: 8 px out every way; up wins, then left.
+    assert nearest_free_place(grid, Box(54, 54, 4, 4)) == Box(54, 44, 4, 4)
+    grid = grid_of(*((3, r, Box(48, r * T, T, T), SOLID) for r in range(10)))
+    assert nearest_free_place(grid, Box(54, 40, 4, 4)) == Box(44, 40, 4, 4)
+
+
+def test_deep_in_rock_the_search_grows_until_it_reaches_open_air() -> None:
+    """Every cell solid: the first windows hold only rock, so the search widens until it
+    reaches past the map, and of the four ways out (74 px up or left, 90 px down or right)
+    the higher wins."""
+    grid = grid_of(*((c, r, Box(c * T, r * T, T, T), SOLID) for c in range(10)
+                     for r in range(10)))
+    assert nearest_free_place(grid, Box(70, 70, 4, 4), search_px=4.0) == Box(70, -4, 4, 4)
+
+
+# --- The tile grid ------------------------------------------------------------------------
+
+@pytest.mark.parametrize(("col", "row"), [(-1, 0), (0, -1), (10, 0), (0, 4)])
+def test_a_shape_is_refused_outside_the_map_with_its_cell_named(col: int, row: int) -> None:
+    with pytest.raises(IndexError, match=fr"cell \({col}, {row}\) is outside a 10x4 map"):
+        TileGrid(10, 4, T, T).put(col, row, TileShape(Box(0, 0, 1, 1), SOLID))
+
+
+def test_shapes_with_no_area_are_kept_for_drawing_but_never_collide() -> None:
+    grid = TileGrid(10, 4, T, T)
+    line = TileShape(Box(16, 0, 0, 16), SOLID, 1, 0)
+    flat = TileShape(Box(32, 8, 16, 0), SOLID, 2, 0)
+    tile = TileShape(Box(16, 0, 16, 16), SOLID, 1, 0)
+    for shape in (line, flat, tile):
+        grid.put(shape.col, shape.row, shape)
+    assert grid.shapes_in(Box(0, 0, 160, 64)) == [tile]
+    assert grid.shapes_at(1, 0) == (tile, line) and grid.shapes_at(2, 0) == (flat,)
+    assert grid.shapes_at(0, 0) == () and grid.shapes_at(-1, 0) == ()
+    assert grid.shapes_at(10, 0) == ()
+    assert grid.shapes_at(0, 4) == () and grid.shapes_at(0, -1) == ()
+    first = TileShape(Box(0, 16, 16, 16), SOLID, 0, 1)
+    grid.put(0, 1, first)
+    assert grid.shapes_at(0, 1) == (first,) and grid.shapes_at(10, 0) == ()
+    assert list(grid.shapes()) == [tile, first, line, flat]
+    with_movers = grid.with_movers(layer=None)  # type: ignore[arg-type]
+    assert list(with_movers.shapes()) == [tile, first, line, flat]
+    assert with_movers.width_px == 160 and with_movers.height_px == 64
+
+
+def test_the_cells_covering_a_region_follow_strict_overlap_and_stay_in_the_map() -> None:
+    grid = TileGrid(10, 4, T, T)
+    assert list(grid.cells_covering(Box(16, 16, 16, 16))) == [(1, 1)]
+    assert list(grid.cells_covering(Box(15.5, 16, 1, 16.5))) == [(0, 1), (1, 1), (0, 2), (1, 2)]
+    assert list(grid.cells_covering(Box(-40, -40, 60, 50))) == [(0, 0), (1, 0)]
+    assert list(grid.cells_covering(Box(150, 60, 100, 100))) == [(9, 3)]
+    assert list(grid.cells_covering(Box(160, 0, 10, 10))) == []
+    assert list(grid.cells_covering(Box(0, 64, 10, 10))) == []
+    assert list(grid.cells_covering(Box(20, 20, 0, 10))) == []
+    assert list(grid.cells_covering(Box(20, 20, 10, -1))) == []
+    assert list(grid.cells_covering(Box(20, 20, math.inf, 10))) == []
+    assert grid.block_covering(15.5, 16, 16.5, 32.5) == (0, 1, 1, 2)
+    assert grid.block_covering(-40, -40, 20, 10) == (0, 1, 0, 0)
+    assert grid.block_covering(0, 0, math.nan, 10) is None
+    assert grid.block_covering(0, 5, 10, 5) is None              # no height
+    assert grid.block_covering(170, 0, 180, 10) is None          # right of the map only
+    assert grid.block_covering(0, 70, 10, 80) is None            # below the map only
+
+
+def test_a_query_counts_the_cells_it_visits_and_the_shapes_it_tests() -> None:
+    grid = floor_grid()
+    grid.put(2, 4, TileShape(Box(32, 72, 8, 8), HAZARD, 2, 4))
+    grid.stats.reset()
+    found = grid.entries_in(20, 70, 50, 82)        # columns 1-3, rows 4-5
+    assert grid.stats.cells_visited == 6 and grid.stats.shapes_tested == 4
+    assert len(found) == 4
+    grid.entries_in(-50, -50, -10, -10)            # off the map: nothing visited
+    assert grid.stats.cells_visited == 6 and grid.stats.shapes_tested == 4
+    grid.stats.reset()
+    assert (grid.stats.cells_visited, grid.stats.shapes_tested) == (0, 0)
+
+
+def test_a_query_far_outside_the_map_clamps_to_its_edge_cells() -> None:
+    grid = floor_grid()
+    assert [s.col for s in grid.shapes_in(Box(-1000, 70, 1020, 20))] == [0, 1]
+    assert [s.col for s in grid.shapes_in(Box(150, 70, 1000, 20))] == [9]
+    assert grid.entries_in(-math.inf, 0, 10, 10) == []
+
+
+def test_an_attached_log_writes_down_each_query_under_its_purpose() -> None:
+    grid = floor_grid()
+    grid.log = QueryLog()
+    grid.log.purpose = "x sweep"
+    grid.entries_in(20, 70, 50, 82)
+    grid.log.purpose = "ground probe"
+    grid.entries_in(-40, -40, 20, 10)
+    assert grid.log.queries == [Query("x sweep", 1, 3, 4, 5), Query("ground probe", 0, 1, 0, 0)]
+    assert list(grid.log.queries[0].cells()) == [(1, 4), (2, 4), (3, 4), (1, 5), (2, 5), (3, 5)]
+    assert list(Query("empty", 3, 2, 0, 0).cells()) == []
+
+
+def test_the_log_notes_the_moving_shapes_a_query_tested_beside_its_tiles() -> None:
+    log = QueryLog()
+    a = TileShape(Box(0, 0, 4, 4), SOLID, -1, 0)
+    b = TileShape(Box(8, 0, 4, 4), SOLID, -1, 1)
+    log.add_extra((a,))                                  # no query yet: nothing to note
+    assert log.queries == []
+    log.add(0, 1, 0, 1)
+    log.add_extra(())
+    assert log.queries[-1].extra == ()
+    log.add_extra((a,))
+    log.add_extra((b,))
+    assert log.queries == [Query("", 0, 1, 0, 1, (a, b))]
+
+
+# --- The tunables -------------------------------------------------------------------------
+
+def test_a_level_sets_the_four_physics_numbers_and_nothing_else() -> None:
+    tuned = Tuning().with_map_properties({"gravity": 100, "max_fall_speed": 200.5,
+                                          "run_speed": 50, "jump_speed": 300,
+                                          "coyote_time": 9, "title": "x"})
+    assert (tuned.gravity_px_s2, tuned.max_fall_speed_px_s, tuned.run_speed_px_s,
+            tuned.jump_speed_px_s) == (100.0, 200.5, 50.0, 300.0)
+    assert isinstance(tuned.gravity_px_s2, float)
+    assert tuned.coyote_time_s == TUNING.coyote_time_s
+
+
+def test_a_level_property_that_is_not_a_number_is_ignored() -> None:
+    tuned = Tuning().with_map_properties({"gravity": "fast", "run_speed": True,
+                                          "jump_speed": None})
+    assert tuned == Tuning()
+
+
+def test_the_run_rate_comes_from_the_ground_or_air_time_of_speeding_up_or_stopping() -> None:
+    tuning = Tuning(run_speed_px_s=60.0, run_accel_time_s=0.1, run_stop_time_s=0.2,
+                    air_accel_time_s=0.25, air_stop_time_s=0.5)
+    assert tuning.run_change_px_s(on_ground=True, speeding_up=True) == pytest.approx(10.0)
+    assert tuning.run_change_px_s(on_ground=True, speeding_up=False) == pytest.approx(5.0)
+    assert tuning.run_change_px_s(on_ground=False, speeding_up=True) == pytest.approx(4.0)
+    assert tuning.run_change_px_s(on_ground=False, speeding_up=False) == pytest.approx(2.0)
+    instant = Tuning(run_accel_time_s=0.0, air_stop_time_s=-1.0)
+    assert instant.run_change_px_s(on_ground=True, speeding_up=True) == math.inf
+    assert instant.run_change_px_s(on_ground=False, speeding_up=False) == math.inf
+
+
+def test_the_tick_counts_are_worked_out_from_the_times() -> None:
+    tuning = Tuning(coyote_time_s=0.2, jump_buffer_s=0.05, invulnerable_time_s=0.5,
+                    hopper_rest_s=0.25)
+    assert (tuning.coyote_ticks, tuning.jump_buffer_ticks, tuning.invulnerable_ticks,
+            tuning.hopper_rest_ticks) == (12, 3, 30, 15)
+
+
+# --- The player ---------------------------------------------------------------------------
+
+def player_in_the_air() -> Player:
+    return Player(Box(0, 0, 12, 14), TUNING)
+
+
+def test_approach_moves_towards_the_target_by_at_most_the_step() -> None:
+    assert approach(5.0, 5.0, 1.0) == 5.0
+    assert approach(4.5, 5.0, 1.0) == 5.0 and approach(5.5, 5.0, 1.0) == 5.0
+    assert approach(0.0, 5.0, 1.0) == 1.0 and approach(0.0, -5.0, 1.0) == -1.0
+
+
+def test_holding_left_and_right_together_runs_nowhere() -> None:
+    player = player_in_the_air()
+    player.decide(frozenset({Action.LEFT, Action.RIGHT}), TUNING)
+    assert player.vx == 0.0 and player.facing == 1
+
+
+def test_the_player_faces_the_way_it_runs_and_starts_facing_right() -> None:
+    player = player_in_the_air()
+    assert player.facing == 1
+    player.decide(LEFT, TUNING)
+    assert player.facing == -1 and player.vx < 0
+    player.decide(NOTHING, TUNING)
+    assert player.facing == -1
+
+
+def test_starting_to_run_in_the_air_uses_the_air_speed_up_time() -> None:
+    player = player_in_the_air()
+    assert player.decide(RIGHT, TUNING) is False
+    assert player.vx == pytest.approx(TUNING.run_speed_px_s * TUNING.tick_s
+                                      / TUNING.air_accel_time_s)
+
+
+def test_starting_to_run_on_the_ground_uses_the_ground_speed_up_time() -> None:
+    tuning = Tuning(run_accel_time_s=0.1, run_stop_time_s=0.2)
+    player = Player(Box(0, 0, 12, 14), tuning)
+    player.on_ground = True
+    player.decide(RIGHT, tuning)
+    assert player.vx == pytest.approx(15.0)      # 90 px/s reached in 0.1 s: 15 px/s a tick
+    player.vx = -30.0
+    player.decide(RIGHT, tuning)
+    assert player.vx == pytest.approx(-30.0 + 7.5)           # turning round: the stop rate
+
+
+def test_a_jump_leaves_the_ground_and_is_reported_once() -> None:
+    player = player_in_the_air()
+    player.on_ground = True
+    assert player.decide(JUMP, TUNING) is True
+    assert not player.on_ground and player.rising_from_jump
+    assert player.vy == -TUNING.jump_speed_px_s + TUNING.gravity_px_s2 * TUNING.tick_s
+    player.on_ground = True                                   # as if it landed at once
+    assert player.decide(JUMP, TUNING) is False               # still held: no new press
+
+
+def test_a_level_that_starts_on_the_ground_jumps_on_the_first_tick() -> None:
+    world = World(level_from_ascii(["     ", "     ", "#####"],
+                                   spawn=Box(16, 2 * T - 14, 12, 14)), TUNING)
+    assert world.player.on_ground
+    assert any(e.kind is EventKind.JUMP for e in world.step(JUMP))
+
+
+def test_a_level_that_starts_on_a_one_way_tile_jumps_on_the_first_tick() -> None:
+    world = World(level_from_ascii(["     ", "     ", "-----"],
+                                   spawn=Box(16, 2 * T - 14, 12, 14)), TUNING)
+    assert world.player.on_ground and not world.player.dropping_through
+    assert any(e.kind is EventKind.JUMP for e in world.step(JUMP))
+
+
+def test_a_cut_jump_is_cut_once() -> None:
+    world = World(level_from_ascii(["     "] * 9 + ["#####"], spawn=Box(16, 9 * T - 14, 12, 14)),
+                  TUNING)
+    world.step(JUMP)
+    world.step(JUMP)
+    world.step(NOTHING)                                      # cut here
+    cut = world.player.vy
+    world.step(NOTHING)
+    assert world.player.vy == cut + TUNING.gravity_px_s2 * TUNING.tick_s
+
+
+def test_after_the_apex_a_held_jump_falls_at_the_plain_gravity() -> None:
+    """A jump speed whose rise ends on a fraction of a pixel per second: the fall that
+    follows is never cut, whether that first downward speed is under 1 px/s or not."""
+    tuning = Tuning(jump_speed_px_s=284.5)
+    world = World(level_from_ascii(["     "] * 9 + ["#####"], spawn=Box(16, 9 * T - 14, 12, 14)),
+                  tuning)
+    world.step(JUMP)
+    speeds = [world.player.vy]
+    for _ in range(25):
+        world.step(JUMP)
+        speeds.append(world.player.vy)
+    steps = [after - before for before, after in itertools.pairwise(speeds) if after < 100]
+    assert steps == pytest.approx([tuning.gravity_px_s2 * tuning.tick_s] * len(steps))
+    assert 0.0 < min(v for v in speeds if v > 0) < 1.0 + 15.0
+
+
+def move_with(hit: Hit | None) -> Move:
+    box = Box(0, 0, 12, 14)
+    return Move(box, hit, box)
+
+
+def test_hitting_a_wall_stops_the_run() -> None:
+    player = player_in_the_air()
+    player.vx, player.vy = 90.0, 30.0
+    player.react(move_with(Hit(Side.RIGHT, 12, None)), move_with(None))
+    assert player.vx == 0.0 and player.vy == 30.0
+
+
+@pytest.mark.parametrize(("side", "vy", "stopped"), [
+    (Side.BOTTOM, 0.5, True), (Side.BOTTOM, -0.5, False),
+    (Side.TOP, -0.5, True), (Side.TOP, 0.5, False)])
+def test_a_floor_stops_a_fall_and_a_ceiling_a_rise_but_neither_the_other(
+        side: Side, vy: float, stopped: bool) -> None:
+    player = player_in_the_air()
+    player.vx, player.vy, player.rising_from_jump = 20.0, vy, True
+    player.react(move_with(None), move_with(Hit(side, 0, None)))
+    assert player.vx == 20.0
+    assert player.vy == (0.0 if stopped else vy)
+    assert player.rising_from_jump is (not stopped)
+
+
+def test_a_bounce_is_a_fall_upwards_that_letting_go_does_not_cut() -> None:
+    player = player_in_the_air()
+    player.on_ground, player.rising_from_jump = True, True
+    player.bounce(200.0)
+    assert player.vy == -200.0 and not player.on_ground and not player.rising_from_jump
+    player.decide(JUMP, TUNING)          # in the air after a bounce: a press is no jump
+    assert player.vy == -200.0 + TUNING.gravity_px_s2 * TUNING.tick_s
+
+
+def test_a_respawn_starts_still_in_the_air_with_no_jump_remembered() -> None:
+    player = player_in_the_air()
+    player.vx, player.vy, player.on_ground, player.rising_from_jump = 50.0, -80.0, True, True
+    player.coyote_ticks_left = player.jump_buffer_ticks_left = 5
+    player.respawn(Box(100, 10, 12, 14), invulnerable_ticks=90)
+    assert player.box == Box(100, 10, 12, 14)
+    assert (player.vx, player.vy, player.on_ground, player.rising_from_jump) == (0, 0, False,
+                                                                                 False)
+    assert player.decide(JUMP, TUNING) is False               # no coyote time after it
+    assert player.invulnerable_ticks_left == 89
+    for _ in range(88):
+        player.decide(NOTHING, TUNING)
+    assert player.invulnerable
+    player.decide(NOTHING, TUNING)
+    assert not player.invulnerable
