@@ -345,13 +345,14 @@ class World:
         """
         landed = y_move.hit if y_move is not None else None
         if landed is not None and landed.side is BOTTOM and landed.face == body.box.bottom:
-            body.standing_on = landed.shape
+            standing_on = landed.shape
         else:
-            body.standing_on = ground_under(solids or self.solids, body.box,
-                                            through_one_way=body.dropping_through)
-        body.on_ground = body.standing_on is not None
-        body.riding = (None if body.standing_on is None or body.standing_on.col != -1
-                       else self.platform_index.platform_of(body.standing_on))
+            standing_on = ground_under(solids or self.solids, body.box,
+                                       through_one_way=body.dropping_through)
+        body.standing_on = standing_on
+        body.on_ground = standing_on is not None
+        body.riding = (None if standing_on is None or standing_on.col != -1
+                       else self.platform_index.platform_of(standing_on))
 
     def _player_contacts(self, path: BodyMoves, reach: Edges, near_trigger: bool,
                          hazards: ShapeSource) -> set[tuple[ContactKey, ContactKey]]:
