@@ -247,8 +247,8 @@ class PlatformIndex:
             right, bottom = x + w, y + h
             if routes is not None:
                 # Speed, kept: each route's block of cells tested against the box finds the
-                # platforms the cells it covers hold; walking those cells made World.step on
-                # The Summit about 3 % slower (paired ratio, as in LevelSolids).
+                # platforms the cells it covers hold; walking those cells took 23.3 against
+                # 8.8 µs a call (timeit, the calls of The Summit's first 1,200 ticks).
                 for r_left, r_top, r_right, r_bottom, platform in routes:
                     if x < r_right and r_left < right and y < r_bottom and r_top < bottom:
                         found.add(platform)
