@@ -102,6 +102,7 @@ class Platform(BoxSprite):
     def __init__(self, spec: PlatformSpec, number: int) -> None:
         self.spec = spec
         self.number = number
+        self.speed_px_s = spec.speed_px_s  # read by every tick's advance, of every platform
         self._entry_at: tuple[float, Entry] | None = None  # the distance it was made for
         super().__init__(self.box_at(0.0))
         self.region = route_region(spec)
@@ -136,7 +137,7 @@ class Platform(BoxSprite):
 
     def advance(self, dt_s: float) -> None:
         """Travel on along the route for one tick."""
-        self.travelled_px += self.spec.speed_px_s * dt_s
+        self.travelled_px += self.speed_px_s * dt_s
 
 
 def route_region(spec: PlatformSpec) -> Box:
