@@ -16,6 +16,7 @@ from game.sim.campaign import Campaign
 from game.sim.inputs import NOTHING, Action
 from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
+from game.sim.solids import LevelSolids
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, Measure, World
 from tests.maps import MEASURED, level_from_ascii
@@ -231,6 +232,13 @@ def test_a_few_platforms_are_found_by_their_routes_as_the_cells_would_find_them(
         *gliders(2), PlatformSpec(Route(((40.0, 20.0), (40.0, 100.0))), 16, 8, 30.0))))
     index = world.platform_index
     by_routes = index.tested_in(x, y, x + w, y + h)
+    box = Box(x, y, w, h)
+    near_by_routes = index.near([box])
+    solids = [LevelSolids(world.grid, index, without) for without in (None, *world.platforms)]
+    found_by_routes = [source.entries_in(x, y, x + w, y + h) for source in solids]
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(platforms, "FEW_PLATFORMS", 0)   # every query walks the cells
         assert index.tested_in(x, y, x + w, y + h) == by_routes
+        assert index.near([box]) == near_by_routes
+        walked = [LevelSolids(world.grid, index, s.without) for s in solids]
+        assert [source.entries_in(x, y, x + w, y + h) for source in walked] == found_by_routes

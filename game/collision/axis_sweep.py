@@ -70,6 +70,12 @@ class Side(Enum):
     BOTTOM = "bottom"  # feet: a floor
 
 
+# Speed, kept: the hot code reads the sides (and the kinds above) as module names, not off
+# their class: Python 3.11 finds an enum's member through its metaclass's ``__getattr__``
+# hook in about 0.2 µs, a module name in 0.015 µs (timeit), and a tick reads dozens.
+LEFT, RIGHT, TOP, BOTTOM = Side.LEFT, Side.RIGHT, Side.TOP, Side.BOTTOM
+
+
 class Hit(NamedTuple):
     """What stopped a move: the body's side, the face coordinate, and the shape.
 
@@ -150,18 +156,18 @@ def move_x(solids: ShapeSource, box: Box, dx: float) -> Move:
         for s_left, _, _, _, kind, shape in solids.entries_in(x, y, stop, y + h):
             if kind is SOLID and right <= s_left < stop:
                 stop, found = s_left, shape
-        hit = None if found is None else _new(Hit, (Side.RIGHT, stop, found))
+        hit = None if found is None else _new(Hit, (RIGHT, stop, found))
         width = solids.width_px
         if right <= width < stop:
-            stop, hit = width, Hit(Side.RIGHT, width, None)
+            stop, hit = width, Hit(RIGHT, width, None)
         return Move(_new(Box, (stop - w, y, w, h)), hit, box, dx)
     stop = x + dx  # moving left: the nearest right face behind the body's left edge
     for _, _, s_right, _, kind, shape in solids.entries_in(stop, y, right, y + h):
         if kind is SOLID and stop < s_right <= x:
             stop, found = s_right, shape
-    hit = None if found is None else _new(Hit, (Side.LEFT, stop, found))
+    hit = None if found is None else _new(Hit, (LEFT, stop, found))
     if stop < 0 <= x:
-        stop, hit = 0, Hit(Side.LEFT, 0, None)
+        stop, hit = 0, Hit(LEFT, 0, None)
     return Move(_new(Box, (stop, y, w, h)), hit, box, dx)
 
 
@@ -185,13 +191,13 @@ def move_y(solids: ShapeSource, box: Box, dy: float, *, through_one_way: bool = 
             if ((kind is SOLID or (kind is ONE_WAY and not through_one_way))
                     and bottom <= s_top < stop):
                 stop, found = s_top, shape
-        hit = None if found is None else _new(Hit, (Side.BOTTOM, stop, found))
+        hit = None if found is None else _new(Hit, (BOTTOM, stop, found))
         return Move(_new(Box, (x, stop - h, w, h)), hit, box, 0.0, dy)
     stop = y + dy  # rising: the nearest solid bottom at or above the head
     for _, _, _, s_bottom, kind, shape in solids.entries_in(x, stop, x + w, bottom):
         if kind is SOLID and stop < s_bottom <= y:
             stop, found = s_bottom, shape
-    hit = None if found is None else _new(Hit, (Side.TOP, stop, found))
+    hit = None if found is None else _new(Hit, (TOP, stop, found))
     return Move(_new(Box, (x, stop, w, h)), hit, box, 0.0, dy)
 
 
@@ -217,7 +223,7 @@ def slide_past_ceiling_corner(solids: ShapeSource, box: Box, dy: float,
     (36, 40.0, None)
     """
     blocked = move_y(solids, box, dy)
-    if blocked.hit is None or blocked.hit.side is not Side.TOP or blocked.hit.shape is None:
+    if blocked.hit is None or blocked.hit.side is not TOP or blocked.hit.shape is None:
         return None
     ceiling = blocked.hit.shape.box
     shifts = sorted((ceiling.left - box.right, ceiling.right - box.left), key=abs)

@@ -37,6 +37,9 @@ class EnemyKind(Enum):
     HOPPER = "hopper"
 
 
+HOPPER = EnemyKind.HOPPER  # read every tick: a module name, as in game.collision.axis_sweep
+
+
 class Enemy(Body):
     """Patrols at ``speed_px_s``, starting towards the left; a hopper only moves mid-hop."""
 
@@ -55,7 +58,7 @@ class Enemy(Body):
         if self.on_ground and not self._ground_ahead(solids):
             self.direction = -self.direction
         self.vx = self.direction * self.speed_px_s
-        if self.kind is EnemyKind.HOPPER:
+        if self.kind is HOPPER:
             self._hop(tuning)
         self.vy = min(self.vy + tuning.gravity_px_s2 * tuning.tick_s,
                       tuning.max_fall_speed_px_s)

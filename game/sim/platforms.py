@@ -102,6 +102,7 @@ class Platform(BoxSprite):
     def __init__(self, spec: PlatformSpec, number: int) -> None:
         self.spec = spec
         self.number = number
+        self.speed_px_s = spec.speed_px_s  # read by every tick's advance, of every platform
         self._entry_at: tuple[float, Entry] | None = None  # the distance it was made for
         super().__init__(self.box_at(0.0))
         self.region = route_region(spec)
@@ -136,7 +137,7 @@ class Platform(BoxSprite):
 
     def advance(self, dt_s: float) -> None:
         """Travel on along the route for one tick."""
-        self.travelled_px += self.spec.speed_px_s * dt_s
+        self.travelled_px += self.speed_px_s * dt_s
 
 
 def route_region(spec: PlatformSpec) -> Box:
@@ -225,6 +226,12 @@ class PlatformIndex:
         return (math.floor(left / tile_w) * tile_w, math.floor(top / tile_h) * tile_h,
                 math.ceil(right / tile_w) * tile_w, math.ceil(bottom / tile_h) * tile_h)
 
+    def few_routes(self) -> list[tuple[float, float, float, float, Platform]] | None:
+        """Each route's block of cells (left, top, right, bottom) and its platform, when a
+        query tests those one by one (up to :data:`FEW_PLATFORMS`, none off the map); else
+        None."""
+        return None if self.outside or len(self.routes) > FEW_PLATFORMS else self.routes
+
     def near(self, boxes: Iterable[Box]) -> set[Platform]:
         """The platforms whose route region shares a cell with any of the boxes (and those
         off the map, which any box may meet)."""
@@ -233,11 +240,21 @@ class PlatformIndex:
             return found
         grid, cells, cols = self.grid, self.cells, self.grid.cols
         low_x, low_y, high_x, high_y = self.bounds
+        routes = self.few_routes()
         for x, y, w, h in boxes:
             if not (w > 0 and h > 0 and x <= high_x and low_x <= x + w and y <= high_y
                     and low_y <= y + h):
                 continue  # nowhere near any route (or NaN)
-            block = grid.block_covering(x, y, x + w, y + h)
+            right, bottom = x + w, y + h
+            if routes is not None:
+                # Speed, kept: each route's block of cells tested against the box finds the
+                # platforms the cells it covers hold; walking those cells took 23.3 against
+                # 8.8 µs a call (timeit, the calls of The Summit's first 1,200 ticks).
+                for r_left, r_top, r_right, r_bottom, platform in routes:
+                    if x < r_right and r_left < right and y < r_bottom and r_top < bottom:
+                        found.add(platform)
+                continue
+            block = grid.block_covering(x, y, right, bottom)
             if block is None:
                 continue
             first_col, last_col, first_row, last_row = block

@@ -20,7 +20,7 @@ from __future__ import annotations
 import pygame
 
 from game.collision.aabb import Box
-from game.collision.axis_sweep import Move, Side
+from game.collision.axis_sweep import BOTTOM, TOP, Move
 from game.sim.body import Body
 from game.sim.inputs import Action, Actions
 from game.sim.sprite import ANIMATION_HZ, Strip, animation_index
@@ -118,8 +118,8 @@ class Player(Body):
         if x_move.hit is not None:
             self.vx = 0.0
         if y_move.hit is not None and (
-            (y_move.hit.side is Side.BOTTOM and self.vy > 0)
-            or (y_move.hit.side is Side.TOP and self.vy < 0)
+            (y_move.hit.side is BOTTOM and self.vy > 0)
+            or (y_move.hit.side is TOP and self.vy < 0)
         ):
             self.vy = 0.0
             self.rising_from_jump = False

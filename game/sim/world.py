@@ -53,9 +53,10 @@ import pygame
 
 from game.collision.aabb import Box
 from game.collision.axis_sweep import (
+    BOTTOM,
+    TOP,
     Edges,
     Move,
-    Side,
     ground_under,
     move_x,
     move_y,
@@ -343,14 +344,15 @@ class World:
         runs when it did not.
         """
         landed = y_move.hit if y_move is not None else None
-        if landed is not None and landed.side is Side.BOTTOM and landed.face == body.box.bottom:
-            body.standing_on = landed.shape
+        if landed is not None and landed.side is BOTTOM and landed.face == body.box.bottom:
+            standing_on = landed.shape
         else:
-            body.standing_on = ground_under(solids or self.solids, body.box,
-                                            through_one_way=body.dropping_through)
-        body.on_ground = body.standing_on is not None
-        body.riding = (None if body.standing_on is None or body.standing_on.col != -1
-                       else self.platform_index.platform_of(body.standing_on))
+            standing_on = ground_under(solids or self.solids, body.box,
+                                       through_one_way=body.dropping_through)
+        body.standing_on = standing_on
+        body.on_ground = standing_on is not None
+        body.riding = (None if standing_on is None or standing_on.col != -1
+                       else self.platform_index.platform_of(standing_on))
 
     def _player_contacts(self, path: BodyMoves, reach: Edges, near_trigger: bool,
                          hazards: ShapeSource) -> set[tuple[ContactKey, ContactKey]]:
@@ -386,7 +388,7 @@ class World:
         rise that clips a ceiling (the slide sideways joins the x move)."""
         box = x_move.box
         move = move_y(solids, box, dy, through_one_way=body.dropping_through)
-        if move.hit is not None and move.hit.side is Side.TOP and body.corner_correction_px:
+        if move.hit is not None and move.hit.side is TOP and body.corner_correction_px:
             slid = slide_past_ceiling_corner(solids, box, dy, body.corner_correction_px)
             if slid is not None:
                 x_move, move = x_move.followed_by(slid.side), slid.rise
