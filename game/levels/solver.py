@@ -12,6 +12,10 @@ What it teaches: a **beam search** over a deterministic simulation.
   choices (:data:`CHOICES`: run left or right, with or without jump, stand, jump on the
   spot, and drop through a one-way floor). Holding jump into the next move keeps a jump
   rising; letting go cuts it, so short and long jumps are both there.
+* **A macro-action: wait.** On a level with moving platforms, a player standing still near
+  a platform's route may also stand for :data:`WAIT_TICKS` ticks in one move, so a beam
+  waiting for a ferry pays for one child instead of seven every 6 ticks. It counts as the
+  moves its ticks would take, so the budget still measures the work done.
 * **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
   state, step the world, keep the child's state.
 * **A layer per move.** All children of the current beam are scored by how far they still
@@ -60,7 +64,7 @@ from game.collision.aabb import Box
 from game.collision.shapes import TileKind
 from game.levels.loader import load_level
 from game.levels.reachable import steps_to_exit
-from game.levels.search_key import StateKey, near, route_box, state_key
+from game.levels.search_key import StateKey, route_box, route_is_near, state_key
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, Actions, InputEvent, Recorder
 from game.sim.level import Level
@@ -230,7 +234,7 @@ class _Search:
         """Standing still on the ground with a moving platform's route nearby."""
         player = self.world.player
         return player.on_ground and player.vx == 0 and any(
-            near(player.box, region) for region in self.routes)
+            route_is_near(player.box, region) for region in self.routes)
 
     def out_of_time(self) -> bool:
         """The search must stop: its budget of moves is spent, or its seconds are up."""
