@@ -21,7 +21,14 @@ from game.levels.checking import Options, check_map
 from game.levels.reach import DEFAULT_LIMITS, Limits, measure_limits, measure_reach
 from game.levels.route_picture import PLATFORM, draw_route
 from game.levels.solver import (
-    DEFAULT_BUDGET, MOVE_TICKS, WAIT_TICKS, Effort, _Search, replay, solve)
+    DEFAULT_BUDGET,
+    MOVE_TICKS,
+    WAIT_TICKS,
+    Effort,
+    _Search,
+    replay,
+    solve,
+)
 from game.levels.verdict import Kind
 from game.sim.inputs import Action, InputScript
 from game.sim.snapshot import Snapshot
