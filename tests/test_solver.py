@@ -20,7 +20,15 @@ from game.levels.__main__ import check, command_name
 from game.levels.checking import Options, check_map
 from game.levels.reach import DEFAULT_LIMITS, Limits, measure_limits, measure_reach
 from game.levels.route_picture import PLATFORM, draw_route
-from game.levels.solver import DEFAULT_BUDGET, Effort, replay, solve
+from game.levels.solver import (
+    DEFAULT_BUDGET,
+    MOVE_TICKS,
+    WAIT_TICKS,
+    Effort,
+    _Search,
+    replay,
+    solve,
+)
 from game.levels.verdict import Kind
 from game.sim.inputs import Action, InputScript
 from game.sim.snapshot import Snapshot
@@ -308,3 +316,15 @@ def test_the_tiled_extension_reads_what_the_checker_writes(
         assert key in document and f"report.{key}" in script
     for key in ("findings", "severity", "text", "object_id", "tile"):
         assert f".{key}" in script
+
+
+def test_the_wait_move_is_offered_only_near_a_moving_platform_and_counts_its_ticks() -> None:
+    plain = _Search(load_level(FIRST), Effort())
+    assert all(ticks == MOVE_TICKS for _, ticks in plain.moves)
+    ferry = _Search(load_level(LEVELS_DIR / "04-moving-parts.tmx"), Effort())
+    assert (frozenset(), WAIT_TICKS) in ferry.moves
+    for _ in range(60):  # let the player land at the spawn and stand still
+        ferry.world.step(frozenset())
+    assert ferry.world.player.on_ground and not ferry.waiting_helps()  # no route near
+    ferry.try_move(frozenset(), WAIT_TICKS)
+    assert ferry.moves_tried == -(-WAIT_TICKS // MOVE_TICKS)

@@ -9,7 +9,9 @@ the same respawn place, almost always have the same futures; keeping one of them
 search from exploring both. Moving platforms matter too, but only those the player could
 meet soon: a platform far away has time to come round again, so its place along its route
 is left out of the key until the player comes near its route (:data:`NEAR_PX`). Without that,
-every tick of waiting would make a new state for each far platform's phase.
+every tick of waiting would make a new state for each far platform's phase. The phase is
+counted in steps of :data:`PLATFORM_PHASE_PX` (two tiles): finer steps made the platform
+levels cost more moves to solve, not fewer.
 
 The key is a heuristic: it may merge two states whose futures differ, which can only make the
 search miss a route, never report one that does not replay (every route is replayed).
@@ -26,7 +28,7 @@ from game.sim.world import World
 
 SAME_PLACE_PX = 4.0  # states closer than this (and alike in speed) count as one
 SAME_SPEED_PX_S = 30.0
-PLATFORM_PHASE_PX = 16.0  # moving platforms this close along their paths count as alike
+PLATFORM_PHASE_PX = 32.0  # moving platforms this close along their paths count as alike
 NEAR_PX = 96.0  # a platform whose route comes this close to the player is in the key
 
 StateKey = tuple[object, ...]
@@ -40,7 +42,7 @@ def route_box(platform: Platform) -> Box:
                max(ys) - min(ys) + platform.spec.height_px)
 
 
-def _near(player: Box, region: Box) -> bool:
+def route_is_near(player: Box, region: Box) -> bool:
     dx = max(0.0, region.left - player.right, player.left - region.right)
     dy = max(0.0, region.top - player.bottom, player.top - region.bottom)
     return dx <= NEAR_PX and dy <= NEAR_PX
@@ -58,7 +60,7 @@ def state_key(world: World, held: Actions, routes: list[Box]) -> StateKey:
     new jump needs a fresh press). ``routes``: each platform's :func:`route_box`."""
     player = world.player
     box = player.box
-    phases = tuple(_phase(platform) if _near(box, region) else None
+    phases = tuple(_phase(platform) if route_is_near(box, region) else None
                    for platform, region in zip(world.platforms, routes, strict=True))
     return (round(box.x / SAME_PLACE_PX), round(box.y / SAME_PLACE_PX),
             round(player.vx / SAME_SPEED_PX_S), round(player.vy / SAME_SPEED_PX_S),

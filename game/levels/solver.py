@@ -12,6 +12,10 @@ What it teaches: a **beam search** over a deterministic simulation.
   choices (:data:`CHOICES`: run left or right, with or without jump, stand, jump on the
   spot, and drop through a one-way floor). Holding jump into the next move keeps a jump
   rising; letting go cuts it, so short and long jumps are both there.
+* **A macro-action: wait.** On a level with moving platforms, a player standing still near
+  a platform's route may also stand for :data:`WAIT_TICKS` ticks in one move, so a beam
+  waiting for a ferry pays for one child instead of seven every 6 ticks. It counts as the
+  moves its ticks would take, so the budget still measures the work done.
 * **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
   state, step the world, keep the child's state.
 * **A layer per move.** All children of the current beam are scored by how far they still
@@ -60,7 +64,7 @@ from game.collision.aabb import Box
 from game.collision.shapes import TileKind
 from game.levels.loader import load_level
 from game.levels.reachable import steps_to_exit
-from game.levels.search_key import StateKey, route_box, state_key
+from game.levels.search_key import StateKey, route_box, route_is_near, state_key
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, Actions, InputEvent, Recorder
 from game.sim.level import Level
@@ -81,6 +85,7 @@ BEST_FIRST_WEIGHT = 3.0  # how much more a tile of distance counts than a tile's
 DEATH_PENALTY_TILES = 20.0  # losing a life costs as much as this much distance
 FEET_PX = 0.5  # the search scores the cell just above the middle of the feet
 DEFAULT_BUDGET = 50_000  # moves the search may try on one map (each move is 6 ticks)
+WAIT_TICKS = 30  # the wait macro: stand still this long, for a moving platform to come round
 
 
 @dataclass(frozen=True)
@@ -190,6 +195,9 @@ class _Search:
         self.goal_cells = [cell for cell, steps in self.steps.items() if steps == 0]
         self.lives = self.world.tuning.start_lives
         self.routes = [route_box(platform) for platform in self.world.platforms]
+        self.moves: list[tuple[Actions, int]] = [(choice, MOVE_TICKS) for choice in CHOICES]
+        if self.world.platforms and WAIT_TICKS:
+            self.moves.insert(0, (frozenset(), WAIT_TICKS))
         self.moves_tried = 0
         self.states = 0
         self.exhausted = False  # a beam kept every state it met: wider ones cannot help
@@ -222,6 +230,12 @@ class _Search:
         """What makes two states the same for the search (:mod:`game.levels.search_key`)."""
         return state_key(self.world, choice, self.routes)
 
+    def waiting_helps(self) -> bool:
+        """Standing still on the ground with a moving platform's route nearby."""
+        player = self.world.player
+        return player.on_ground and player.vx == 0 and any(
+            route_is_near(player.box, region) for region in self.routes)
+
     def out_of_time(self) -> bool:
         """The search must stop: its budget of moves is spent, or its seconds are up."""
         return self.moves_tried >= self.effort.budget or (
@@ -250,19 +264,21 @@ class _Search:
                  seen: set[StateKey]) -> Iterator[tuple[float, Snapshot, Node]]:
         """Every new state one move from ``snapshot``; stops early at an Exit (its Node
         comes with an infinitely good score of minus infinity)."""
-        for choice in CHOICES:
+        for choice, move_ticks in self.moves:
             if self.out_of_time():
                 return
             snapshot.restore(self.world)
             if choice is DROP and not self.world.player.on_ground_one_way:
                 continue
-            outcome = self.try_move(choice)
+            if move_ticks != MOVE_TICKS and not self.waiting_helps():
+                continue
+            outcome = self.try_move(choice, move_ticks)
             lost = node.lives_lost if node is not None else 0
             if outcome < 0:
                 lost += 1
                 if lost >= self.lives:
                     continue
-            child = Node(node, choice, ticks + (outcome if outcome > 0 else MOVE_TICKS), lost)
+            child = Node(node, choice, ticks + (outcome if outcome > 0 else move_ticks), lost)
             if outcome > 0:
                 yield -math.inf, snapshot, child
                 return
@@ -306,13 +322,11 @@ class _Search:
         seen: set[StateKey] = set()
         closest, since_closer = UNREACHABLE, 0
         dropped = False
-        move = 0
         while not self.out_of_time():
-            move += 1
             children: list[tuple[float, int, Snapshot, Node]] = []
             for snapshot, node in beam:
                 for score, child_state, child in self.children(
-                        snapshot, node, (move - 1) * MOVE_TICKS, seen):
+                        snapshot, node, node.ticks if node is not None else 0, seen):
                     if score == -math.inf:
                         return child
                     children.append((score, len(children), child_state, child))
@@ -332,12 +346,12 @@ class _Search:
                     return None
         return None
 
-    def try_move(self, choice: Actions) -> int:
+    def try_move(self, choice: Actions, move_ticks: int = MOVE_TICKS) -> int:
         """Hold ``choice`` for one move: +ticks if an Exit was reached on that tick, else
         -1 if a life was lost on the way (the world has put the player back), 0 if not."""
-        self.moves_tried += 1
+        self.moves_tried += math.ceil(move_ticks / MOVE_TICKS)  # a wait counts its ticks
         hurt = False
-        for tick in range(1, MOVE_TICKS + 1):
+        for tick in range(1, move_ticks + 1):
             for event in self.world.step(choice):
                 if event.kind is EventKind.EXIT:
                     return tick
