@@ -23,7 +23,7 @@ from game.sim.inputs import NOTHING, Action, Actions
 from game.sim.platforms import Platform, PlatformIndex, PlatformSpec, Route
 from game.sim.player import Player, approach
 from game.sim.query_log import LoggedSource, Query, QueryLog
-from game.sim.solids import LevelSolids
+from game.sim.solids import LevelSolids, Lookups
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
 from tests.maps import level_from_ascii
@@ -305,6 +305,26 @@ def test_a_query_far_outside_the_map_clamps_to_its_edge_cells() -> None:
     assert [s.col for s in grid.shapes_in(Box(-1000, 70, 1020, 20))] == [0, 1]
     assert [s.col for s in grid.shapes_in(Box(150, 70, 1000, 20))] == [9]
     assert grid.entries_in(-math.inf, 0, 10, 10) == []
+
+
+def test_a_query_reaching_past_the_map_s_right_edge_in_its_last_row_finds_the_last_column() -> None:
+    grid = grid_of(*((c, 5, Box(c * T, 5 * T, T, T), SOLID) for c in range(10)), rows=6)
+    assert [s.col for s in grid.shapes_in(Box(150, 84, 20, 12))] == [9]   # last_col == cols
+    assert [s.col for s in grid.shapes_in(Box(150, 84, 17, 12))] == [9]
+
+
+def test_plain_lookups_ask_the_level_s_solids_and_each_platform_pushes_without_itself() -> None:
+    grid = floor_grid()
+    a, b = (Platform(PlatformSpec(Route(((x, 0.0),)), 4, 4, 0.0), n)
+            for n, x in ((0, 0.0), (1, 8.0)))
+    solids = LevelSolids(grid, PlatformIndex(grid, [a, b]))
+    lookups = Lookups.plain(solids, [a, b])
+    for source in (lookups.ledges, lookups.x_sweep, lookups.y_sweep, lookups.ground_probe,
+                   lookups.hazards, lookups.checkpoint_spawn, lookups.penetration):
+        assert source is solids
+    assert [s.without for s in lookups.platforms] == [a, b]  # type: ignore[attr-defined]
+    assert [[e.shape for e in s.entries_in(0, 0, 12, 2)] for s in lookups.platforms] == [
+        [b.shape], [a.shape]]
 
 
 def test_an_attached_log_writes_down_each_query_under_its_purpose() -> None:
