@@ -10,16 +10,19 @@ at 60; these pin where each rule stops, so a change of the number fails a test.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, field
 
 import pytest
 
 # Everything the tests use from the game, in one place.
 from game.collision.aabb import Box
+from game.collision.axis_sweep import Side, ground_under, move_x, move_y, slide_past_ceiling_corner
+from game.collision.shapes import TileKind, TileShape
+from game.collision.tile_grid import TileGrid
 from game.sim.inputs import NOTHING, Action, Actions
-from game.sim.movement import Side, ground_under, move_x, move_y, slide_past_ceiling_corner
+from game.sim.platforms import FEW_PLATFORMS, Platform, PlatformIndex, PlatformSpec, Route
 from game.sim.player import DROP_THROUGH_TICKS
-from game.sim.tilegrid import Entry, TileGrid, TileKind, TileShape, entry_of
+from game.sim.query_log import LoggedSource, QueryLog
+from game.sim.solids import LevelSolids
 from game.sim.tuning import Tuning
 from game.sim.world import Event, EventKind, World
 from tests.maps import MEASURED, level_from_ascii
@@ -385,95 +388,95 @@ def test_standing_on_a_half_height_tile_the_player_runs_over_its_seams() -> None
     assert world.player.box.x > 150
 
 
-@dataclass
-class Mover:
-    """A moving shape as the grid's second layer sees it."""
-
-    number: int
-    entry: Entry
+def platform_at(number: int, box: Box) -> Platform:
+    """A platform standing still at ``box`` (a route of one point), numbered ``number``."""
+    spec = PlatformSpec(Route(((box.x, box.y),)), box.w, box.h, 0.0)
+    return Platform(spec, number)
 
 
-@dataclass
-class Layer:
-    """A layer of movers filed by cell, as the platforms' index files them."""
-
-    grid: TileGrid
-    cells: list[Sequence[Mover] | None] = field(default_factory=list)
-    cell_bounds: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
-    outside: list[Mover] = field(default_factory=list)
-
-    def file(self, mover: Mover, col: int, row: int) -> None:
-        if not self.cells:
-            self.cells = [None] * (self.grid.cols * self.grid.rows)
-        key = row * self.grid.cols + col
-        self.cells[key] = [*(self.cells[key] or ()), mover]
-        low_x, low_y, high_x, high_y = self.cell_bounds
-        self.cell_bounds = ((col * T, row * T, (col + 1) * T, (row + 1) * T) if high_x == 0
-                            else (min(low_x, col * T), min(low_y, row * T),
-                                  max(high_x, (col + 1) * T), max(high_y, (row + 1) * T)))
+# Platforms parked in the top-left cell, far from every query below: with them a level has
+# more than FEW_PLATFORMS, so its index walks the cells a query covers instead of testing
+# each route's block. Every rule below holds either way.
+PARKED = [platform_at(100 + k, Box(2, 2, 4, 4)) for k in range(FEW_PLATFORMS)]
+HOW_MANY = pytest.mark.parametrize("parked", [0, FEW_PLATFORMS], ids=["few", "many"])
 
 
-def mover_of(number: int, box: Box) -> Mover:
-    return Mover(number, entry_of(TileShape(box, SOLID, -1, number)))
+def solids_with(*platforms: Platform, parked: int = 0,
+                tiles: TileGrid | None = None) -> LevelSolids:
+    """The tiles (an empty 10x10 map unless given) and the platforms, asked as one."""
+    grid = TileGrid(cols=10, rows=10, tile_w=T, tile_h=T) if tiles is None else tiles
+    index = PlatformIndex(grid, [*platforms, *PARKED[:parked]])
+    assert (len(index.routes) > FEW_PLATFORMS) is (parked > 0)
+    return LevelSolids(grid, index)
 
 
-def grid_with_a_mover(box: Box = SHAPE) -> tuple[TileGrid, Layer]:
-    layer = Layer(TileGrid(cols=10, rows=10, tile_w=T, tile_h=T))
-    layer.file(mover_of(0, box), 5, 5)
-    return layer.grid.with_movers(layer), layer
-
-
+@HOW_MANY
 @pytest.mark.parametrize("face", list(TOUCHING))
-def test_the_grid_query_leaves_out_a_moving_shape_that_a_region_only_touches(face: str) -> None:
-    grid, _ = grid_with_a_mover()
-    assert grid.shapes_in(TOUCHING[face]) == []
+def test_the_platforms_query_leaves_out_a_platform_that_a_region_only_touches(
+        face: str, parked: int) -> None:
+    solids = solids_with(platform_at(0, SHAPE), parked=parked)
+    assert solids.shapes_in(TOUCHING[face]) == []
+    x, y, w, h = TOUCHING[face]
+    assert solids.platforms.entries_in(x, y, x + w, y + h) == []
 
 
+@HOW_MANY
 @pytest.mark.parametrize("face", list(OVERLAPPING))
-def test_the_grid_query_finds_a_moving_shape_a_region_overlaps_by_half_a_pixel(face: str) -> None:
-    grid, _ = grid_with_a_mover()
-    assert [s.box for s in grid.shapes_in(OVERLAPPING[face])] == [SHAPE]
+def test_the_platforms_query_finds_a_platform_a_region_overlaps_by_half_a_pixel(
+        face: str, parked: int) -> None:
+    solids = solids_with(platform_at(0, SHAPE), parked=parked)
+    assert [s.box for s in solids.shapes_in(OVERLAPPING[face])] == [SHAPE]
 
 
-def test_a_moving_shape_with_no_area_is_never_found() -> None:
+@HOW_MANY
+def test_a_platform_with_no_area_is_never_found(parked: int) -> None:
     for box in (Box(86, 84, 0, 8), Box(84, 86, 8, 0)):
-        grid, _ = grid_with_a_mover(box)
-        assert grid.shapes_in(Box(80, 80, 16, 16)) == []
+        solids = solids_with(platform_at(0, box), parked=parked)
+        assert solids.shapes_in(Box(80, 80, 16, 16)) == []
+        assert solids.platforms.entries_in(80, 80, 96, 96) == []
 
 
-def test_the_grid_query_finds_moving_shapes_after_the_tiles_in_number_order() -> None:
-    grid, layer = grid_with_a_mover(Box(84, 84, 4, 4))
-    layer.file(mover_of(2, Box(70, 70, 4, 4)), 4, 4)
-    layer.file(mover_of(1, Box(88, 88, 4, 4)), 5, 5)
+@HOW_MANY
+def test_the_level_query_finds_platforms_after_the_tiles_in_number_order(parked: int) -> None:
+    grid = TileGrid(cols=10, rows=10, tile_w=T, tile_h=T)
     grid.put(4, 5, TileShape(Box(64, 80, 16, 16), SOLID, 4, 5))
-    found = [(s.col, s.row) for s in grid.shapes_in(Box(60, 60, 40, 40))]
+    platforms = [platform_at(0, Box(84, 84, 4, 4)), platform_at(1, Box(88, 88, 4, 4)),
+                 platform_at(2, Box(70, 70, 4, 4))]
+    if parked:  # the cells' walk meets number 2 first (cell (4, 4)); it must sort them
+        platforms.reverse()
+    solids = solids_with(*platforms, parked=parked, tiles=grid)
+    found = [(s.col, s.row) for s in solids.shapes_in(Box(60, 60, 40, 40))]
     assert found == [(4, 5), (-1, 0), (-1, 1), (-1, 2)]
 
 
-def test_the_grid_query_skips_the_mover_it_is_asked_to_ignore() -> None:
-    grid, layer = grid_with_a_mover()
-    mover = layer.cells[5 * 10 + 5]
-    assert mover is not None
-    assert grid.entries_in(80, 80, 96, 96, ignoring=mover[0]) == []
-    assert len(grid.entries_in(80, 80, 96, 96)) == 1
+@HOW_MANY
+def test_the_query_skips_the_platform_it_is_asked_to_leave_out(parked: int) -> None:
+    platform = platform_at(0, SHAPE)
+    solids = solids_with(platform, parked=parked)
+    assert solids.leaving_out(platform).entries_in(80, 80, 96, 96) == []
+    assert solids.platforms.entries_in(80, 80, 96, 96, platform) == []
+    assert len(solids.entries_in(80, 80, 96, 96)) == 1
 
 
-def test_a_mover_filed_in_several_cells_is_found_once() -> None:
-    grid, layer = grid_with_a_mover(Box(90, 84, 12, 4))
-    layer.file(layer.cells[5 * 10 + 5][0], 6, 5)  # type: ignore[index]
-    assert len(grid.entries_in(80, 80, 112, 96)) == 1
-    grid.stats.reset()
-    grid.entries_in(80, 80, 112, 96)
-    assert grid.stats.shapes_tested == 1
+@HOW_MANY
+def test_a_platform_filed_in_several_cells_is_found_and_tested_once(parked: int) -> None:
+    solids = solids_with(platform_at(0, Box(90, 84, 12, 4)), parked=parked)
+    assert len(solids.entries_in(80, 80, 112, 96)) == 1
+    log = QueryLog()
+    LoggedSource(solids, log, "x sweep").entries_in(80, 80, 112, 96)
+    assert log.stats.shapes_tested == 1
+    assert [q.extra for q in log.queries] == [(solids.platforms.platforms[0].shape,)]
 
 
-def test_movers_off_the_map_are_tested_by_every_query() -> None:
-    grid, layer = grid_with_a_mover(Box(84, 84, 4, 4))
-    far = mover_of(7, Box(-40, 4, 8, 8))
-    layer.outside.append(far)
-    assert [s.row for s in grid.shapes_in(Box(-44, 0, 200, 100))] == [0, 7]
-    assert grid.entries_in(-44, 0, 4, 16, ignoring=far) == []   # nothing else out there
-    assert grid.entries_in(-44, 0, 4, 16) == [far.entry]
+@HOW_MANY
+def test_platforms_off_the_map_are_tested_by_every_query(parked: int) -> None:
+    near = platform_at(0, Box(84, 84, 4, 4))
+    far = platform_at(7, Box(-40, 4, 8, 8))
+    solids = solids_with(near, far, parked=parked)
+    assert solids.platforms.outside == [far]
+    assert [s.row for s in solids.shapes_in(Box(-44, 8, 200, 100))] == [0, 7]
+    assert solids.leaving_out(far).entries_in(-44, 0, 1, 16) == []  # nothing else out there
+    assert solids.entries_in(-44, 0, 1, 16) == [far.entry]
 
 
 # --- Flush stops --------------------------------------------------------------------------

@@ -15,20 +15,15 @@ import pytest
 
 # Everything the tests use from the game, in one place.
 from game.collision.aabb import RECT_MAX, RECT_MIN, Box, rects_overlap
+from game.collision.axis_sweep import Hit, Move, Side, move_x, move_y, slide_past_ceiling_corner
+from game.collision.free_place import nearest_free_place, penetration_depth, touching
+from game.collision.shapes import TileKind, TileShape
+from game.collision.tile_grid import CountedGrid, TileGrid
 from game.sim.inputs import NOTHING, Action, Actions
-from game.sim.movement import (
-    Hit,
-    Move,
-    Side,
-    move_x,
-    move_y,
-    nearest_free_place,
-    penetration_depth,
-    slide_past_ceiling_corner,
-    touching,
-)
+from game.sim.platforms import Platform, PlatformIndex, PlatformSpec, Route
 from game.sim.player import Player, approach
-from game.sim.tilegrid import Query, QueryLog, TileGrid, TileKind, TileShape
+from game.sim.query_log import LoggedSource, Query, QueryLog
+from game.sim.solids import LevelSolids, Lookups
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
 from tests.maps import level_from_ascii
@@ -267,9 +262,9 @@ def test_shapes_with_no_area_are_kept_for_drawing_but_never_collide() -> None:
     grid.put(0, 1, first)
     assert grid.shapes_at(0, 1) == (first,) and grid.shapes_at(10, 0) == ()
     assert list(grid.shapes()) == [tile, first, line, flat]
-    with_movers = grid.with_movers(layer=None)  # type: ignore[arg-type]
-    assert list(with_movers.shapes()) == [tile, first, line, flat]
-    assert with_movers.width_px == 160 and with_movers.height_px == 64
+    with_platforms = LevelSolids(grid, PlatformIndex(grid))   # a level with no platform
+    assert with_platforms.shapes_in(Box(0, 0, 160, 64)) == [tile, first]
+    assert with_platforms.width_px == 160 and with_platforms.height_px == 64
 
 
 def test_the_cells_covering_a_region_follow_strict_overlap_and_stay_in_the_map() -> None:
@@ -292,12 +287,13 @@ def test_the_cells_covering_a_region_follow_strict_overlap_and_stay_in_the_map()
 
 
 def test_a_query_counts_the_cells_it_visits_and_the_shapes_it_tests() -> None:
-    grid = floor_grid()
-    grid.put(2, 4, TileShape(Box(32, 72, 8, 8), HAZARD, 2, 4))
-    grid.stats.reset()
+    plain = floor_grid()
+    plain.put(2, 4, TileShape(Box(32, 72, 8, 8), HAZARD, 2, 4))
+    grid = CountedGrid(plain)
+    assert (grid.width_px, grid.height_px) == (plain.width_px, plain.height_px)
     found = grid.entries_in(20, 70, 50, 82)        # columns 1-3, rows 4-5
     assert grid.stats.cells_visited == 6 and grid.stats.shapes_tested == 4
-    assert len(found) == 4
+    assert len(found) == 4 and found == plain.entries_in(20, 70, 50, 82)
     grid.entries_in(-50, -50, -10, -10)            # off the map: nothing visited
     assert grid.stats.cells_visited == 6 and grid.stats.shapes_tested == 4
     grid.stats.reset()
@@ -311,30 +307,57 @@ def test_a_query_far_outside_the_map_clamps_to_its_edge_cells() -> None:
     assert grid.entries_in(-math.inf, 0, 10, 10) == []
 
 
+def test_a_query_reaching_past_the_map_s_right_edge_in_its_last_row_finds_the_last_column() -> None:
+    grid = grid_of(*((c, 5, Box(c * T, 5 * T, T, T), SOLID) for c in range(10)), rows=6)
+    assert [s.col for s in grid.shapes_in(Box(150, 84, 20, 12))] == [9]   # last_col == cols
+    assert [s.col for s in grid.shapes_in(Box(150, 84, 17, 12))] == [9]
+
+
+def test_plain_lookups_ask_the_level_s_solids_and_each_platform_pushes_without_itself() -> None:
+    grid = floor_grid()
+    a, b = (Platform(PlatformSpec(Route(((x, 0.0),)), 4, 4, 0.0), n)
+            for n, x in ((0, 0.0), (1, 8.0)))
+    solids = LevelSolids(grid, PlatformIndex(grid, [a, b]))
+    lookups = Lookups.plain(solids, [a, b])
+    for source in (lookups.ledges, lookups.x_sweep, lookups.y_sweep, lookups.ground_probe,
+                   lookups.hazards, lookups.checkpoint_spawn, lookups.penetration):
+        assert source is solids
+    assert [s.without for s in lookups.platforms] == [a, b]  # type: ignore[attr-defined]
+    assert [[e.shape for e in s.entries_in(0, 0, 12, 2)] for s in lookups.platforms] == [
+        [b.shape], [a.shape]]
+
+
 def test_an_attached_log_writes_down_each_query_under_its_purpose() -> None:
     grid = floor_grid()
-    grid.log = QueryLog()
-    grid.log.purpose = "x sweep"
-    grid.entries_in(20, 70, 50, 82)
-    grid.log.purpose = "ground probe"
-    grid.entries_in(-40, -40, 20, 10)
-    assert grid.log.queries == [Query("x sweep", 1, 3, 4, 5), Query("ground probe", 0, 1, 0, 0)]
-    assert list(grid.log.queries[0].cells()) == [(1, 4), (2, 4), (3, 4), (1, 5), (2, 5), (3, 5)]
+    solids = LevelSolids(grid, PlatformIndex(grid))
+    log = QueryLog()
+    found = LoggedSource(solids, log, "x sweep").entries_in(20, 70, 50, 82)
+    assert found == grid.entries_in(20, 70, 50, 82)
+    LoggedSource(solids, log, "ground probe").entries_in(-40, -40, 20, 10)
+    LoggedSource(solids, log, "hazards").entries_in(-50, -50, -10, -10)  # off the map
+    assert log.queries == [Query("x sweep", 1, 3, 4, 5), Query("ground probe", 0, 1, 0, 0),
+                           Query("hazards", 0, -1, 0, -1)]
+    assert list(log.queries[0].cells()) == [(1, 4), (2, 4), (3, 4), (1, 5), (2, 5), (3, 5)]
+    assert list(log.queries[2].cells()) == []
     assert list(Query("empty", 3, 2, 0, 0).cells()) == []
+    assert log.stats.cells_visited == 6 + 2
+    log.clear()
+    assert log.queries == [] and (log.stats.cells_visited, log.stats.shapes_tested) == (0, 0)
 
 
 def test_the_log_notes_the_moving_shapes_a_query_tested_beside_its_tiles() -> None:
+    grid = floor_grid()
+    a, b = (Platform(PlatformSpec(Route(((x, 0.0),)), 4, 4, 0.0), n)
+            for n, x in ((0, 0.0), (1, 8.0)))
+    solids = LevelSolids(grid, PlatformIndex(grid, [a, b]))
     log = QueryLog()
-    a = TileShape(Box(0, 0, 4, 4), SOLID, -1, 0)
-    b = TileShape(Box(8, 0, 4, 4), SOLID, -1, 1)
-    log.add_extra((a,))                                  # no query yet: nothing to note
-    assert log.queries == []
-    log.add(0, 1, 0, 1)
-    log.add_extra(())
-    assert log.queries[-1].extra == ()
-    log.add_extra((a,))
-    log.add_extra((b,))
-    assert log.queries == [Query("", 0, 1, 0, 1, (a, b))]
+    LoggedSource(solids, log, "y sweep").entries_in(0, 20, 10, 30)   # near neither
+    LoggedSource(solids, log, "y sweep").entries_in(0, 0, 12, 2)     # tests both
+    LoggedSource(solids.leaving_out(a), log, "platforms").entries_in(0, 0, 12, 2)
+    assert [q.extra for q in log.queries] == [(), (a.shape, b.shape), (b.shape,)]
+    assert log.stats.shapes_tested == 2 + 1
+    assert LoggedSource(solids, log, "").width_px == grid.width_px
+    assert LoggedSource(solids, log, "").height_px == grid.height_px
 
 
 # --- The tunables -------------------------------------------------------------------------

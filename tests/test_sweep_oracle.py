@@ -23,8 +23,9 @@ from hypothesis import strategies as st
 
 # Everything the tests use from the game, in one place.
 from game.collision.aabb import Box
-from game.sim.movement import Move, Side, move_x, move_y
-from game.sim.tilegrid import TileGrid, TileKind, TileShape
+from game.collision.axis_sweep import Move, Side, move_x, move_y
+from game.collision.shapes import TileKind, TileShape
+from game.collision.tile_grid import TileGrid
 
 T = 16
 COLS, ROWS = 12, 8
