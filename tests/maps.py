@@ -122,3 +122,16 @@ def level_from_boxes(cols: int, rows: int, solids: list[Box], spawn: Box, exits:
                                                      col, row))
     return Level(path=Path("test.tmx"), grid=grid, spawn=spawn, exits=tuple(exits),
                  platforms=platforms, checkpoints=checkpoints)
+
+
+# A ledge of seven tiles over nothing, the spawn near its left end: for running off an edge
+# (coyote time) and jumping from it.
+LEDGE = ["                              ",
+         "                              ",
+         "                              ",
+         "                              ",
+         "  P                           ",
+         "#######                       ",
+         "                              ",
+         "                              ",
+         "                              "]

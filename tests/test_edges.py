@@ -25,7 +25,7 @@ from game.sim.query_log import LoggedSource, QueryLog
 from game.sim.solids import LevelSolids
 from game.sim.tuning import Tuning
 from game.sim.world import Event, EventKind, World
-from tests.maps import MEASURED, level_from_ascii
+from tests.maps import LEDGE, MEASURED, level_from_ascii
 
 T = 16
 TUNING = Tuning()
@@ -51,16 +51,6 @@ def jumped(events: Sequence[Event]) -> bool:
 
 
 # --- Coyote time: a jump pressed up to 6 ticks (0.1 s) after leaving a ledge ---------------
-
-LEDGE = ["                              ",
-         "                              ",
-         "                              ",
-         "                              ",
-         "  P                           ",
-         "#######                       ",
-         "                              ",
-         "                              ",
-         "                              "]
 
 
 def jump_pressed_after_leaving_the_ledge(ticks: int) -> bool:

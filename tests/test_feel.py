@@ -9,7 +9,7 @@ from game.sim.campaign import Campaign
 from game.sim.inputs import NOTHING, Action, Actions
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
-from tests.maps import MEASURED, level_from_ascii
+from tests.maps import LEDGE, MEASURED, level_from_ascii
 
 RIGHT: Actions = frozenset({Action.RIGHT})
 JUMP: Actions = frozenset({Action.JUMP})
@@ -82,17 +82,6 @@ def test_releasing_jump_early_gives_a_lower_apex_than_holding_it() -> None:
     short, full = apex_after_holding_jump_for(4), apex_after_holding_jump_for(60)
     assert short < full * 0.6
     assert full > 2 * 16                      # a held jump clears two tiles
-
-
-LEDGE = ["                              ",
-         "                              ",
-         "                              ",
-         "                              ",
-         "  P                           ",
-         "#######                       ",
-         "                              ",
-         "                              ",
-         "                              "]
 
 
 def ticks_after_leaving_ledge_then_jump(delay: int) -> bool:
