@@ -135,3 +135,13 @@ LEDGE = ["                              ",
          "                              ",
          "                              ",
          "                              "]
+
+
+# A four-tile ceiling (columns 5-8, row 2) over a floor: for jumps that clip its corners.
+CEILING = ["                    ",
+           "                    ",
+           "     ####           ",
+           "                    ",
+           "                    ",
+           "                    ",
+           "####################"]

@@ -25,7 +25,7 @@ from game.sim.query_log import LoggedSource, QueryLog
 from game.sim.solids import LevelSolids
 from game.sim.tuning import Tuning
 from game.sim.world import Event, EventKind, World
-from tests.maps import LEDGE, MEASURED, level_from_ascii
+from tests.maps import CEILING, LEDGE, MEASURED, level_from_ascii
 
 T = 16
 TUNING = Tuning()
@@ -126,14 +126,8 @@ def test_a_jump_held_down_through_a_landing_does_not_jump_again() -> None:
 
 # --- Ceiling corner correction: a head clipping a corner by up to 4 px slides past it ------
 
-CEILING = ["                    ",
-           "                    ",
-           "     ####           ",
-           "                    ",
-           "                    ",
-           "                    ",
-           "####################"]
-CEILING_LEFT, CEILING_RIGHT, CEILING_BOTTOM = 5 * T, 9 * T, 3 * T
+
+CEILING_LEFT, CEILING_RIGHT, CEILING_BOTTOM = 5 * T, 9 * T, 3 * T  # of maps.CEILING
 
 
 def jump_under_the_ceiling_from(x: float) -> tuple[World, float]:

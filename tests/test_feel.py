@@ -9,7 +9,7 @@ from game.sim.campaign import Campaign
 from game.sim.inputs import NOTHING, Action, Actions
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
-from tests.maps import LEDGE, MEASURED, level_from_ascii
+from tests.maps import CEILING, LEDGE, MEASURED, level_from_ascii
 
 RIGHT: Actions = frozenset({Action.RIGHT})
 JUMP: Actions = frozenset({Action.JUMP})
@@ -127,15 +127,6 @@ def test_a_jump_pressed_5_ticks_before_landing_happens_on_landing() -> None:
 
 def test_a_jump_pressed_long_before_landing_is_forgotten() -> None:
     assert not landing_jump_after_pressing_early(TUNING.jump_buffer_ticks + 3)
-
-
-CEILING = ["                    ",
-           "                    ",
-           "     ####           ",
-           "                    ",
-           "                    ",
-           "                    ",
-           "####################"]
 
 
 def rise_under_ceiling_corner(overlap_px: float) -> tuple[World, float]:
