@@ -10,10 +10,11 @@ the player's reach: an error), or **not decided** (the search spent its budget o
 ``--budget N`` moves, or ``--seconds S`` if given, and nothing proved it impossible: a
 ``warning: not decided`` line that says how far it got and how to search further).
 ``--proof SCRIPT`` replays a recorded win instead of searching; ``--no-solve`` judges
-nothing; ``--format json`` prints one JSON document instead of lines. The summary line
-counts each verdict and states the player's reach. Exit status: 0 every map playable (and,
-when judged, solved); 1 a map is bad or impossible; 2 bad usage; 3 no map bad or
-impossible, but at least one not decided.
+nothing; ``--format json`` prints one JSON document instead of lines; ``--jobs N`` checks
+up to N maps at once (default: one per core), with the same lines in the same order. The
+summary line counts each verdict and states the player's reach. Exit status: 0 every map
+playable (and, when judged, solved); 1 a map is bad or impossible; 2 bad usage; 3 no map
+bad or impossible, but at least one not decided.
 
 ``solve MAP [--out SCRIPT] [--picture PNG] [--budget N] [--seconds S]`` searches for that
 route, writes it as an input script and draws it over the map; exit 0 when found, 1 when
@@ -45,13 +46,14 @@ from pathlib import Path
 
 import pygame
 
-from game.levels.checking import Finding, MapReport, Options, check_map
+from game.levels.checking import Finding, MapReport, Options
 from game.levels.errors import LevelError, escaped
 from game.levels.loader import load_level
 from game.levels.outputs import image_suffix, write_output, write_surface
 from game.levels.reach import limits_of, measure_limits, measure_reach
 from game.levels.route_picture import draw_route
 from game.levels.shipped import LEVELS_DIR
+from game.levels.side_by_side import check_maps, usable_cores
 from game.levels.solver import DEFAULT_BUDGET, Effort
 from game.levels.verdict import Kind, judge
 from game.sim.tuning import TICK_HZ, Tuning
@@ -123,20 +125,23 @@ def _summary(reports: list[MapReport], options: Options) -> tuple[str, int]:
     return line, status
 
 
-def check(paths: list[Path], options: Options, output: str = "text") -> int:
-    """Print what is wrong with each map and how each was judged; return the exit status."""
+def check(paths: list[Path], options: Options, output: str = "text", jobs: int = 1) -> int:
+    """Print what is wrong with each map and how each was judged; return the exit status.
+    ``jobs``: how many maps to check at once (:mod:`game.levels.side_by_side`)."""
+    found = [found for argument in paths or sorted(LEVELS_DIR.glob("*.tmx"))  # none: the
+             for found in _maps(argument)]                                      # campaign
+    checked = check_maps([path for path, refusal in found if refusal is None], options, jobs)
     reports: list[MapReport] = []
-    for argument in paths or sorted(LEVELS_DIR.glob("*.tmx")):  # none: the campaign
-        for path, refusal in _maps(argument):
-            if refusal is not None:
-                report = MapReport(path)
-                report.findings.append(_refused(path, refusal))
-            else:
-                report = check_map(path, options)
-            reports.append(report)
-            if output == "text":
-                for finding in report.findings:
-                    print(escaped(finding.text), flush=True)
+    for path, refusal in found:
+        if refusal is not None:
+            report = MapReport(path)
+            report.findings.append(_refused(path, refusal))
+        else:
+            report = next(checked)
+        reports.append(report)
+        if output == "text":
+            for finding in report.findings:
+                print(escaped(finding.text), flush=True)
     line, status = _summary(reports, options)
     if output == "json":
         print(json.dumps({"maps": [r.as_json() for r in reports], "summary": line,
@@ -257,6 +262,14 @@ def _budget(text: str) -> int:
     return int(text)
 
 
+def _jobs(text: str) -> int:
+    """A positive whole number of maps at once, for argparse."""
+    if not text.isdigit() or len(text) > 12 or int(text) <= 0:
+        raise argparse.ArgumentTypeError(f"{text[:40]!r} is not a positive whole number of "
+                                         "maps")
+    return int(text)
+
+
 def _add_search_options(parser: argparse.ArgumentParser, seconds_flags: list[str]) -> None:
     parser.add_argument("--budget", type=_budget, default=DEFAULT_BUDGET, metavar="N",
                         help="the most moves the search may try on a map, the same on any "
@@ -285,6 +298,10 @@ def _parser(prog: str) -> argparse.ArgumentParser:
                               "instead of searching (one map only)")
     check_parser.add_argument("--format", choices=("text", "json"), default="text",
                               help="text lines (default) or one JSON document")
+    check_parser.add_argument("--jobs", type=_jobs, default=usable_cores(), metavar="N",
+                              help="check up to N maps at once, never more than one per core "
+                              f"(default: one per core, here {usable_cores()}); the lines and "
+                              "verdicts are the same")
     solve_parser = commands.add_parser(
         "solve", help="find inputs that win a map",
         description="Exit status: 0 a route was found; 1 the map is bad or impossible; "
@@ -325,7 +342,8 @@ def _main(argv: list[str] | None) -> int:
     if args.proof is not None and (len(args.paths) != 1 or args.no_solve):
         parser.error("--proof SCRIPT goes with exactly one map, and not with --no-solve")
     return check(args.paths, Options(solve=not args.no_solve, effort=effort,
-                                     proof=args.proof, command=prog), args.format)
+                                     proof=args.proof, command=prog), args.format,
+                 args.jobs)
 
 
 if __name__ == "__main__":

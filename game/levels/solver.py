@@ -79,7 +79,9 @@ CHOICES: tuple[Actions, ...] = (
 DROP = CHOICES[-1]  # only tried while standing on a one-way floor
 PIT_PENALTY_TILES = 6.0  # falling with no floor below costs as much as this much distance
 STALL_MOVES = 60  # a beam that gets no closer for this many moves (plus a platform's
-#                   round trip) is given up for a wider one
+#                   round trip) is stuck
+BACK_MOVES = 20  # a stuck beam goes back this many moves (doubling if stuck again) ...
+HISTORY_LAYERS = 400  # ... but no further back than this (or else to the spawn)
 UNREACHABLE = math.inf
 BEST_FIRST_WEIGHT = 3.0  # how much more a tile of distance counts than a tile's worth of time
 DEATH_PENALTY_TILES = 20.0  # losing a life costs as much as this much distance
@@ -94,7 +96,7 @@ class Effort:
 
     budget: int = DEFAULT_BUDGET  # moves the whole search may try: the bound on its work
     greedy_moves: int = 14_000  # of those, the most the best-first search may try first
-    widths: tuple[int, ...] = (6, 12, 24)
+    width: int = 6  # the beam's width where it is not stuck
     seconds: float | None = None  # an extra wall-clock limit (None: none, the default)
 
 
@@ -248,20 +250,11 @@ class _Search:
             found = self.best_first(min(self.effort.greedy_moves, self.effort.budget))
             if found is not None or self.out_of_time():
                 return found
-        width = 0
-        for width in self.effort.widths:
-            found = self.beam(width)
-            if found is not None or self.out_of_time() or self.exhausted:
-                return found
-        while not self.out_of_time() and not self.exhausted:  # budget left: wider still
-            width *= 2
-            found = self.beam(width)
-            if found is not None:
-                return found
-        return None
+        return self.beams()
 
     def children(self, snapshot: Snapshot, node: Node | None, ticks: int,
-                 seen: set[StateKey]) -> Iterator[tuple[float, Snapshot, Node]]:
+                 seen: dict[StateKey, int], layer: int = 0,
+                 ) -> Iterator[tuple[float, Snapshot, Node]]:
         """Every new state one move from ``snapshot``; stops early at an Exit (its Node
         comes with an infinitely good score of minus infinity)."""
         for choice, move_ticks in self.moves:
@@ -285,7 +278,7 @@ class _Search:
             key = (*self.key(choice), lost)
             if key in seen:
                 continue
-            seen.add(key)
+            seen[key] = layer
             score = self.score() + lost * DEATH_PENALTY_TILES
             if score == UNREACHABLE:
                 continue  # no way on to an Exit from here, by the proof of reachable
@@ -299,7 +292,7 @@ class _Search:
         (weighted A*): quick on levels that need no waiting."""
         grid, tuning = self.level.grid, self.world.tuning
         tiles_per_tick = tuning.run_speed_px_s * tuning.tick_s / grid.tile_w
-        seen: set[StateKey] = set()
+        seen: dict[StateKey, int] = {}
         queue: list[tuple[float, int, Snapshot, Node | None]] = [(0.0, 0, self.start, None)]
         order = 0
         while queue and self.moves_tried < max_moves:
@@ -315,35 +308,58 @@ class _Search:
                 return None
         return None
 
-    def beam(self, width: int) -> Node | None:
-        """One beam search of ``width``; the Node that reached an Exit, or None."""
+    def beams(self) -> Node | None:
+        """Beam search that widens where it is stuck and narrows again once past: when the
+        beam dies out, or gets no closer for a while, it goes back :data:`BACK_MOVES` layers
+        and carries on from there twice as wide (going back twice as far each time it fails
+        again at the same place); a beam that comes closer than any before narrows again."""
         self.pit_penalty = PIT_PENALTY_TILES  # a narrow beam must not fill up with falls
-        beam: list[tuple[Snapshot, Node | None]] = [(self.start, None)]
-        seen: set[StateKey] = set()
+        base = width = self.effort.width
+        layers: list[list[tuple[Snapshot, Node | None]] | None] = [[(self.start, None)]]
+        seen: dict[StateKey, int] = {}  # each key, with the layer it was first met at
+        record = UNREACHABLE  # the closest any beam has come to an Exit
+        failures = 0  # beams that failed since the last record
         closest, since_closer = UNREACHABLE, 0
-        dropped = False
+        started_at, dropped = 0, False
         while not self.out_of_time():
+            depth = len(layers) - 1
+            beam = layers[depth]
+            assert beam is not None  # the newest layer is always kept
             children: list[tuple[float, int, Snapshot, Node]] = []
             for snapshot, node in beam:
                 for score, child_state, child in self.children(
-                        snapshot, node, node.ticks if node is not None else 0, seen):
+                        snapshot, node, node.ticks if node is not None else 0, seen,
+                        depth + 1):
                     if score == -math.inf:
                         return child
                     children.append((score, len(children), child_state, child))
             if self.out_of_time():
                 return None
-            if not children:
-                self.exhausted = not dropped  # it kept every state it met, and all ended
+            if children and since_closer <= self.stall_moves:
+                dropped = dropped or len(children) > width
+                children.sort(key=lambda c: (c[0], c[1]))
+                layers.append([(snapshot, node) for _, _, snapshot, node in children[:width]])
+                if len(layers) > HISTORY_LAYERS + 1:
+                    layers[-HISTORY_LAYERS - 2] = None  # layer 0 (the spawn) is always kept
+                best = children[0][0]
+                if best < closest:
+                    closest, since_closer = best, 0
+                else:
+                    since_closer += 1
+                if best < record:
+                    record, failures, width = best, 0, base
+                continue
+            if not children and started_at == 0 and not dropped:
+                self.exhausted = True  # it kept every state it met, and all ended
                 return None
-            dropped = dropped or len(children) > width
-            children.sort(key=lambda c: (c[0], c[1]))
-            beam = [(snapshot, node) for _, _, snapshot, node in children[:width]]
-            if children[0][0] < closest:
-                closest, since_closer = children[0][0], 0
-            else:
-                since_closer += 1
-                if since_closer > self.stall_moves:
-                    return None
+            failures += 1  # stuck: go back, and try again wider
+            width = base * 2 ** failures
+            back = max(0, depth - BACK_MOVES * 2 ** (failures - 1))
+            started_at = next(layer for layer in range(back, depth + 1)
+                              if layers[layer] is not None) if back else 0
+            del layers[started_at + 1:]
+            seen = {key: layer for key, layer in seen.items() if layer <= started_at}
+            closest, since_closer, dropped = UNREACHABLE, 0, False
         return None
 
     def try_move(self, choice: Actions, move_ticks: int = MOVE_TICKS) -> int:

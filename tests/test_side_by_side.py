@@ -1,0 +1,84 @@
+"""Checking maps side by side: the same lines in the same order as one at a time, the
+biggest map started first, and never more processes than cores."""
+
+from __future__ import annotations
+
+import multiprocessing
+from pathlib import Path
+
+import pytest
+
+from game.levels import side_by_side
+from game.levels.__main__ import check
+from game.levels.checking import Options
+from game.levels.side_by_side import check_maps
+from game.levels.solver import Effort
+from tests.maps import write_tmx
+
+SMALL = Options(effort=Effort(budget=2_000))
+
+
+def _folder(tmp_path: Path) -> Path:
+    """Four small maps: two winnable (one much bigger), one walled off, one bad."""
+    write_tmx(tmp_path, ["P   D", "#####"], "a-short.tmx")
+    write_tmx(tmp_path, ["P" + " " * 40 + "D", "#" * 42], "b-long.tmx")
+    write_tmx(tmp_path, ["   #  ", "   #  ", "   #  ", "   #  ", "P  # D", "######"],
+              "c-walled.tmx")
+    write_tmx(tmp_path, ["    D", "#####"], "d-no-spawn.tmx")
+    return tmp_path
+
+
+def test_checking_side_by_side_prints_what_one_at_a_time_prints(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    folder = _folder(tmp_path)
+    monkeypatch.setattr(side_by_side, "usable_cores", lambda: 2)
+    alone = check([folder], SMALL, jobs=1)
+    one_at_a_time = capsys.readouterr().out
+    together = check([folder], SMALL, jobs=2)
+    assert together == alone == 1
+    assert capsys.readouterr().out == one_at_a_time
+    assert one_at_a_time.index("c-walled.tmx") < one_at_a_time.index("d-no-spawn.tmx")
+
+
+def test_the_biggest_map_starts_first_and_reports_keep_their_order(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    folder = _folder(tmp_path)
+    paths = sorted(folder.glob("*.tmx"))
+    started: list[list[str]] = []
+
+    class Recorder:
+        """A pool that runs its jobs here, in the order it was given them."""
+
+        def __init__(self, processes: int, initializer: object) -> None:
+            assert processes == 2
+
+        def __enter__(self) -> Recorder:
+            return self
+
+        def __exit__(self, *_: object) -> None:
+            return None
+
+        def imap_unordered(self, work: object, jobs: list[tuple[int, Path, Options]],
+                           ) -> list[tuple[int, object]]:
+            started.append([path.name for _, path, _ in jobs])
+            done = [side_by_side._check(job) for job in jobs]
+            return list(reversed(done))  # back in the worst order
+
+    monkeypatch.setattr(side_by_side, "usable_cores", lambda: 8)
+    monkeypatch.setattr(multiprocessing, "Pool", Recorder)
+    reports = list(check_maps(paths, SMALL, jobs=2))
+    (order,) = started
+    sizes = [(folder / name).stat().st_size for name in order]
+    assert order[0] == "b-long.tmx" and sizes == sorted(sizes, reverse=True)
+    assert [report.path for report in reports] == paths
+
+
+def test_no_more_processes_than_cores(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    def no_pool(*_: object, **__: object) -> None:
+        raise AssertionError("one core: no pool")
+
+    monkeypatch.setattr(side_by_side, "usable_cores", lambda: 1)
+    monkeypatch.setattr(multiprocessing, "Pool", no_pool)
+    paths = sorted(_folder(tmp_path).glob("*.tmx"))
+    assert [r.path for r in check_maps(paths, SMALL, jobs=64)] == paths
