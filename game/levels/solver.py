@@ -12,17 +12,21 @@ What it teaches: a **beam search** over a deterministic simulation.
   choices (:data:`CHOICES`: run left or right, with or without jump, stand, jump on the
   spot, and drop through a one-way floor). Holding jump into the next move keeps a jump
   rising; letting go cuts it, so short and long jumps are both there.
-* **A macro-action: wait.** On a level with moving platforms, a player standing still near
-  a platform's route may also stand for :data:`WAIT_TICKS` ticks in one move, so a beam
-  waiting for a ferry pays for one child instead of seven every 6 ticks. It counts as the
-  moves its ticks would take, so the budget still measures the work done.
+* **Two macro-actions: waits.** On a level with moving platforms, a player standing still
+  near a platform's route may also stand for :data:`WAIT_TICKS` ticks in one move, or
+  stand until a platform comes within :data:`COMES_PX` (worked out from the platforms'
+  routes alone, since they go their ways whatever the player does), so a beam waiting for
+  a ferry pays for one child instead of seven every 6 ticks. A wait counts as the moves its
+  ticks would take, so the budget still measures the work done.
 * **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
   state, step the world, keep the child's state.
 * **A layer per move.** All children of the current beam are scored by how far they still
-  are from an Exit, and only the best :attr:`Effort.widths` survive. Two states with the
-  same key (:mod:`game.levels.search_key`: about the same place and speed, the nearby
-  moving platforms at the same point of their paths) are the same state: only the first is
-  kept, ever, so the beam cannot go round in circles.
+  are from an Exit, and the best :attr:`Effort.width` survive, at most :data:`PER_CELL` of
+  them in any one tile while others are left: a beam whose states all stand in one place is
+  one state wide, and stuck together. Two states with the same key
+  (:mod:`game.levels.search_key`: about the same place and speed, the nearby moving
+  platforms at the same point of their paths) are the same state: only the first is kept,
+  so the beam cannot go round in circles.
 * **The score** is the number of steps from the player's cell to an Exit along the moves
   of the reach proof (:func:`game.levels.reachable.steps_to_exit`): it knows that a ledge
   too high must be climbed from elsewhere, and a state from which no step leads on to an
@@ -34,9 +38,12 @@ What it teaches: a **beam search** over a deterministic simulation.
   If it has not found a route after :attr:`Effort.greedy_moves` moves, beams take over. On
   a level with moving platforms the beams go first: waiting for a platform never improves
   the score, so a best-first search would never wait.
-* **Widening.** A narrow beam is fast but can throw away the one state that needed to wait.
-  When a beam dies out, or stops getting closer for a while, the search starts again wider,
-  doubling past the last of :attr:`Effort.widths` until the budget is spent.
+* **Widening where stuck.** A narrow beam is fast but can throw away the one state that
+  needed to wait. When a beam dies out, or gets no closer for a while, the search goes back
+  :data:`BACK_MOVES` layers and carries on from there twice as wide (going back twice as
+  far, and twice as wide again, each time it is stuck before coming closer than ever), and
+  narrows again once it has come closer than any beam before: the work already done before
+  the hard place is kept, not done again.
 * **Losing a life** is allowed while lives remain (the game lets a player finish after one):
   the branch carries on from the respawn place, counting the life lost, behind a penalty.
 
@@ -82,12 +89,16 @@ STALL_MOVES = 60  # a beam that gets no closer for this many moves (plus a platf
 #                   round trip) is stuck
 BACK_MOVES = 20  # a stuck beam goes back this many moves (doubling if stuck again) ...
 HISTORY_LAYERS = 400  # ... but no further back than this (or else to the spawn)
+PER_CELL = 1  # a beam keeps at most this many states in one tile while others are left
 UNREACHABLE = math.inf
 BEST_FIRST_WEIGHT = 3.0  # how much more a tile of distance counts than a tile's worth of time
 DEATH_PENALTY_TILES = 20.0  # losing a life costs as much as this much distance
 FEET_PX = 0.5  # the search scores the cell just above the middle of the feet
 DEFAULT_BUDGET = 50_000  # moves the search may try on one map (each move is 6 ticks)
 WAIT_TICKS = 30  # the wait macro: stand still this long, for a moving platform to come round
+UNTIL_A_PLATFORM_COMES = 0  # the other wait: stand still until a moving platform comes ...
+COMES_PX = 16.0  # ... this close to the player
+MAX_WAIT_TICKS = 36_000  # no wait is longer than this (10 minutes of play)
 
 
 @dataclass(frozen=True)
@@ -199,13 +210,17 @@ class _Search:
         self.routes = [route_box(platform) for platform in self.world.platforms]
         self.moves: list[tuple[Actions, int]] = [(choice, MOVE_TICKS) for choice in CHOICES]
         if self.world.platforms and WAIT_TICKS:
-            self.moves.insert(0, (frozenset(), WAIT_TICKS))
+            self.moves[:0] = [(frozenset(), UNTIL_A_PLATFORM_COMES), (frozenset(), WAIT_TICKS)]
+        # (place, tick a platform comes) of each wait tried, with the layer it was tried at
+        self.waits: dict[tuple[float, float, int], int] = {}
         self.moves_tried = 0
         self.states = 0
         self.exhausted = False  # a beam kept every state it met: wider ones cannot help
         self.pit_penalty = 0.0  # the beams set it: see beam()
         periods = [2 * p.spec.path.length / p.spec.speed_px_s for p in self.world.platforms
                    if p.spec.speed_px_s > 0]
+        self.round_trip_ticks = math.ceil(min(max(periods, default=0.0) / self.world.tuning.tick_s,
+                                              MAX_WAIT_TICKS))
         round_trip_moves = max(periods, default=0.0) / (MOVE_TICKS * self.world.tuning.tick_s)
         self.stall_moves = STALL_MOVES + math.ceil(min(round_trip_moves, 100_000))
         self.deadline = (time.monotonic() + effort.seconds if effort.seconds is not None
@@ -231,6 +246,24 @@ class _Search:
     def key(self, choice: Actions) -> StateKey:
         """What makes two states the same for the search (:mod:`game.levels.search_key`)."""
         return state_key(self.world, choice, self.routes)
+
+    def ticks_until_a_platform_comes(self) -> int | None:
+        """How long a player standing here must wait for a moving platform (one not within
+        :data:`COMES_PX` now) to come within :data:`COMES_PX`, or None if none comes within
+        a round trip. Found from the platforms' routes alone: a platform goes its way
+        whatever the player does."""
+        box, dt = self.world.player.box, self.world.tuning.tick_s
+        soonest: int | None = None
+        for platform, region in zip(self.world.platforms, self.routes, strict=True):
+            if (platform.speed_px_s <= 0 or not route_is_near(box, region)
+                    or _gap(box, platform.box) <= COMES_PX):
+                continue
+            step = platform.speed_px_s * dt
+            for ticks in range(1, min(self.round_trip_ticks, soonest or MAX_WAIT_TICKS) + 1):
+                if _gap(box, platform.box_at(platform.travelled_px + step * ticks)) <= COMES_PX:
+                    soonest = ticks
+                    break
+        return soonest
 
     def waiting_helps(self) -> bool:
         """Standing still on the ground with a moving platform's route nearby."""
@@ -265,6 +298,13 @@ class _Search:
                 continue
             if move_ticks != MOVE_TICKS and not self.waiting_helps():
                 continue
+            if move_ticks == UNTIL_A_PLATFORM_COMES:
+                coming = self.ticks_until_a_platform_comes()
+                box = self.world.player.box
+                if coming is None or (box.x, box.y, ticks + coming) in self.waits:
+                    continue  # none comes, or a wait here already met this platform
+                self.waits[(box.x, box.y, ticks + coming)] = layer
+                move_ticks = coming
             outcome = self.try_move(choice, move_ticks)
             lost = node.lives_lost if node is not None else 0
             if outcome < 0:
@@ -326,6 +366,7 @@ class _Search:
             beam = layers[depth]
             assert beam is not None  # the newest layer is always kept
             children: list[tuple[float, int, Snapshot, Node]] = []
+            cells: list[tuple[int, int]] = []
             for snapshot, node in beam:
                 for score, child_state, child in self.children(
                         snapshot, node, node.ticks if node is not None else 0, seen,
@@ -333,12 +374,13 @@ class _Search:
                     if score == -math.inf:
                         return child
                     children.append((score, len(children), child_state, child))
+                    cells.append(self.cell())
             if self.out_of_time():
                 return None
             if children and since_closer <= self.stall_moves:
                 dropped = dropped or len(children) > width
                 children.sort(key=lambda c: (c[0], c[1]))
-                layers.append([(snapshot, node) for _, _, snapshot, node in children[:width]])
+                layers.append(self.diverse(children, cells, width))
                 if len(layers) > HISTORY_LAYERS + 1:
                     layers[-HISTORY_LAYERS - 2] = None  # layer 0 (the spawn) is always kept
                 best = children[0][0]
@@ -359,8 +401,34 @@ class _Search:
                               if layers[layer] is not None) if back else 0
             del layers[started_at + 1:]
             seen = {key: layer for key, layer in seen.items() if layer <= started_at}
+            self.waits = {wait: layer for wait, layer in self.waits.items()
+                          if layer <= started_at}
             closest, since_closer, dropped = UNREACHABLE, 0, False
         return None
+
+    def cell(self) -> tuple[int, int]:
+        """The tile the middle of the player's feet is in."""
+        grid, box = self.level.grid, self.world.player.box
+        return (math.floor(box.center[0] / grid.tile_w),
+                math.floor((box.bottom - FEET_PX) / grid.tile_h))
+
+    def diverse(self, children: list[tuple[float, int, Snapshot, Node]],
+                cells: list[tuple[int, int]], width: int) -> list[tuple[Snapshot, Node | None]]:
+        """The best ``width`` children, at most :data:`PER_CELL` of them in any one tile
+        while others are left: a beam full of states in one place is stuck together."""
+        kept: list[tuple[Snapshot, Node | None]] = []
+        per_cell: dict[tuple[int, int], int] = {}
+        later: list[tuple[Snapshot, Node | None]] = []
+        for _, order, snapshot, node in children:
+            cell = cells[order]
+            if per_cell.get(cell, 0) < PER_CELL:
+                per_cell[cell] = per_cell.get(cell, 0) + 1
+                kept.append((snapshot, node))
+                if len(kept) == width:
+                    return kept
+            elif len(later) < width:
+                later.append((snapshot, node))
+        return kept + later[:width - len(kept)]
 
     def try_move(self, choice: Actions, move_ticks: int = MOVE_TICKS) -> int:
         """Hold ``choice`` for one move: +ticks if an Exit was reached on that tick, else
@@ -373,6 +441,11 @@ class _Search:
                     return tick
                 hurt = hurt or event.kind is EventKind.HURT
         return -1 if hurt else 0
+
+
+def _gap(a: Box, b: Box) -> float:
+    """How far apart two boxes are (0 when they touch or overlap), along the farther axis."""
+    return max(0.0, b.left - a.right, a.left - b.right, b.top - a.bottom, a.top - b.bottom)
 
 
 def _held_per_tick(node: Node | None) -> list[Actions]:

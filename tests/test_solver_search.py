@@ -1,0 +1,100 @@
+"""How the solver searches: the wait for a platform ends when the simulation says it comes,
+a beam keeps one state a tile while others are left, and a stuck beam goes back a few layers
+and widens instead of starting again from the spawn."""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Iterator
+from typing import cast
+
+from game.collision.aabb import Box
+from game.levels.solver import (
+    BACK_MOVES,
+    COMES_PX,
+    MOVE_TICKS,
+    UNTIL_A_PLATFORM_COMES,
+    Effort,
+    Node,
+    _gap,
+    _Search,
+)
+from game.sim.level import Level
+from game.sim.platforms import PlatformSpec, Route
+from game.sim.snapshot import Snapshot
+from tests.maps import level_from_boxes
+from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, WIDTH, exit_on, ferry
+
+
+def ferry_coming_back() -> Level:
+    """The ferry starts on the far side of the pit, and the spawn is at the near edge."""
+    far = EDGE + 160
+    ride = PlatformSpec(Route(((far - 48, FLOOR), (EDGE, FLOOR))), 48.0, 8.0, 40.0)
+    return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, EDGE, 64),
+                                         Box(far, FLOOR, WIDTH - far, 64)],
+                            Box(EDGE - 14, FLOOR - 14, 12, 14), [exit_on(FLOOR)],
+                            platforms=(ride,))
+
+
+def test_the_wait_for_a_platform_ends_on_the_tick_it_comes() -> None:
+    search = _Search(ferry_coming_back(), Effort())
+    for _ in range(10):  # land at the spawn, standing still
+        search.world.step(frozenset())
+    assert search.waiting_helps()
+    coming = search.ticks_until_a_platform_comes()
+    assert coming is not None and coming > 10 * MOVE_TICKS  # a long wait, in one move
+    (platform,) = search.world.platforms
+    player = search.world.player
+    for _ in range(coming - 1):
+        search.world.step(frozenset())
+        assert _gap(player.box, platform.box) > COMES_PX
+    search.world.step(frozenset())
+    assert _gap(player.box, platform.box) <= COMES_PX
+
+
+def test_the_wait_is_one_child_that_counts_the_moves_its_ticks_take() -> None:
+    search = _Search(ferry_coming_back(), Effort())
+    for _ in range(10):
+        search.world.step(frozenset())
+    coming = search.ticks_until_a_platform_comes()
+    assert coming is not None
+    search.moves = [(frozenset(), UNTIL_A_PLATFORM_COMES)]
+    (child,) = [node for _, _, node in
+                search.children(Snapshot.of(search.world), None, 10, {})]
+    assert child.ticks == 10 + coming
+    assert search.moves_tried == -(-coming // MOVE_TICKS)
+    # The same wait from the same place is not tried twice.
+    assert not list(search.children(Snapshot.of(search.world), None, 10, {}))
+
+
+def test_a_beam_keeps_one_state_a_tile_while_others_are_left() -> None:
+    search = _Search(ferry(), Effort())
+    snapshots = [cast(Snapshot, object()) for _ in range(5)]
+    nodes = [Node(None, frozenset(), MOVE_TICKS) for _ in range(5)]
+    children = [(float(score), order, snapshots[order], nodes[order])
+                for order, score in enumerate((1, 2, 3, 4, 5))]
+    cells = [(3, 4), (3, 4), (3, 4), (5, 4), (6, 4)]
+    kept = search.diverse(children, cells, 3)
+    assert [node for _, node in kept] == [nodes[0], nodes[3], nodes[4]]
+    # With too few tiles, the best of the rest fill the beam.
+    kept = search.diverse(children, cells, 4)
+    assert [node for _, node in kept] == [nodes[0], nodes[3], nodes[4], nodes[1]]
+
+
+def test_a_stuck_beam_goes_back_a_few_layers_not_to_the_spawn() -> None:
+    search = _Search(ferry(), Effort(width=2))
+    layers: list[int] = []
+    expand = search.children
+
+    def recorded(snapshot: Snapshot, node: Node | None, ticks: int,
+                 seen: dict[tuple[object, ...], int], layer: int = 0,
+                 ) -> Iterator[tuple[float, Snapshot, Node]]:
+        layers.append(layer)
+        return expand(snapshot, node, ticks, seen, layer)
+
+    search.children = recorded  # type: ignore[method-assign]
+    assert search.run() is not None
+    back = [(stuck, again) for stuck, again in itertools.pairwise(layers) if again < stuck]
+    assert back, "the narrow beam was never stuck: the map no longer tests going back"
+    stuck, again = back[0]
+    assert again == stuck - BACK_MOVES and again > 1
