@@ -12,8 +12,8 @@ What it teaches: a **beam search** over a deterministic simulation.
   choices (:data:`CHOICES`: run left or right, with or without jump, stand, jump on the
   spot, and drop through a one-way floor). Holding jump into the next move keeps a jump
   rising; letting go cuts it, so short and long jumps are both there.
-* **Two macro-actions: waits.** On a level with moving platforms, a player standing still
-  near a platform's route may also stand for :data:`WAIT_TICKS` ticks in one move, or
+* **Two macro-actions: waits.** On a level with moving platforms, a player on the ground
+  near a platform's route may also let go of the keys and stand for :data:`WAIT_TICKS` ticks in one move, or
   stand until a platform comes within :data:`COMES_PX` (worked out from the platforms'
   routes alone, since they go their ways whatever the player does), so a beam waiting for
   a ferry pays for one child instead of seven every 6 ticks. A wait counts as the moves its
@@ -107,7 +107,7 @@ class Effort:
 
     budget: int = DEFAULT_BUDGET  # moves the whole search may try: the bound on its work
     greedy_moves: int = 14_000  # of those, the most the best-first search may try first
-    width: int = 6  # the beam's width where it is not stuck
+    width: int = 4  # the beam's width where it is not stuck
     seconds: float | None = None  # an extra wall-clock limit (None: none, the default)
 
 
@@ -266,9 +266,10 @@ class _Search:
         return soonest
 
     def waiting_helps(self) -> bool:
-        """Standing still on the ground with a moving platform's route nearby."""
+        """On the ground with a moving platform's route nearby (a player still running
+        stops first: waiting only lets go of the keys)."""
         player = self.world.player
-        return player.on_ground and player.vx == 0 and any(
+        return player.on_ground and any(
             route_is_near(player.box, region) for region in self.routes)
 
     def out_of_time(self) -> bool:
