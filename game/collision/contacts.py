@@ -37,7 +37,7 @@ from collections import deque
 from collections.abc import Iterable
 from dataclasses import dataclass
 from enum import Enum
-from typing import Generic
+from typing import Any, Generic
 
 from game.collision.broad.brute_force import K, pair_of
 
@@ -69,6 +69,9 @@ class ContactChanges(Generic[K]):
     ended: frozenset[tuple[K, K]]
 
 
+NOTHING_CHANGED: ContactChanges[Any] = ContactChanges(frozenset(), frozenset())  # one for all
+
+
 class ContactTracker(Generic[K]):
     """Remembers last tick's touching pairs and reports only what changed."""
 
@@ -82,7 +85,7 @@ class ContactTracker(Generic[K]):
         self.tick += 1
         now = frozenset(pair_of(a, b) for a, b in touching)
         if not now and not self.touching:  # nothing touched then or now: nothing changed
-            return ContactChanges(now, now)
+            return NOTHING_CHANGED
         changes = ContactChanges(started=now - self.touching, ended=self.touching - now)
         self.touching = now
         for pair in sorted(changes.ended):  # endings first: a hand-over reads in order

