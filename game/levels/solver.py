@@ -13,11 +13,11 @@ What it teaches: a **beam search** over a deterministic simulation.
   spot, and drop through a one-way floor). Holding jump into the next move keeps a jump
   rising; letting go cuts it, so short and long jumps are both there.
 * **Two macro-actions: waits.** On a level with moving platforms, a player on the ground
-  near a platform's route may also let go of the keys and stand for :data:`WAIT_TICKS` ticks in one move, or
-  stand until a platform comes within :data:`COMES_PX` (worked out from the platforms'
-  routes alone, since they go their ways whatever the player does), so a beam waiting for
-  a ferry pays for one child instead of seven every 6 ticks. A wait counts as the moves its
-  ticks would take, so the budget still measures the work done.
+  near a platform's route may also let go of the keys and stand for :data:`WAIT_TICKS`
+  ticks in one move, or stand until a platform comes within :data:`COMES_PX` (worked out
+  from the platforms' routes alone, since they go their ways whatever the player does), so
+  a beam waiting for a ferry pays for one child instead of seven every 6 ticks. A wait
+  counts as the moves its ticks would take, so the budget still measures the work done.
 * **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
   state, step the world, keep the child's state.
 * **A layer per move.** All children of the current beam are scored by how far they still
@@ -232,9 +232,7 @@ class _Search:
         """How far the player still is from an Exit, in tiles (lower is better)."""
         world, grid = self.world, self.level.grid
         box = world.player.box
-        cell = (math.floor(box.center[0] / grid.tile_w),
-                math.floor((box.bottom - FEET_PX) / grid.tile_h))
-        steps = self.steps.get(cell)
+        steps = self.steps.get(self.cell())
         if steps is None:
             return UNREACHABLE
         if self.pit_penalty and not world.player.on_ground and world.player.vy > 0:
