@@ -187,7 +187,8 @@ def test_solve_writes_a_script_the_game_replays_to_the_exit_and_a_picture(
     assert solved.returncode == 0, solved.stderr
     assert picture.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     played = subprocess.run([sys.executable, "-m", "game", "--headless", "--level", str(FIRST),
-                             "--inputs", str(script), "--report", str(report)],
+                             "--inputs", str(script), "--report", str(report),
+                             "--ticks", "1800"],  # the campaign goes on to level 2: stop there
                             capture_output=True, text=True, timeout=600, check=False, cwd=ROOT)
     assert played.returncode == 0, played.stderr
     assert '"levels_completed": 1' in report.read_text(encoding="utf-8")

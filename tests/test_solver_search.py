@@ -23,16 +23,16 @@ from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.snapshot import Snapshot
 from tests.maps import level_from_boxes
-from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, WIDTH, exit_on, ferry
+from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, SPAWN, WIDTH, exit_on, ferry
 
 
-def ferry_coming_back() -> Level:
-    """The ferry starts on the far side of the pit, and the spawn is at the near edge."""
+def ferry_coming_back(speed_px_s: float = 40.0, spawn: Box | None = None) -> Level:
+    """The ferry starts on the far side of the pit; the spawn is at the near edge."""
     far = EDGE + 160
-    ride = PlatformSpec(Route(((far - 48, FLOOR), (EDGE, FLOOR))), 48.0, 8.0, 40.0)
+    ride = PlatformSpec(Route(((far - 48, FLOOR), (EDGE, FLOOR))), 48.0, 8.0, speed_px_s)
     return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, EDGE, 64),
                                          Box(far, FLOOR, WIDTH - far, 64)],
-                            Box(EDGE - 14, FLOOR - 14, 12, 14), [exit_on(FLOOR)],
+                            spawn or Box(EDGE - 14, FLOOR - 14, 12, 14), [exit_on(FLOOR)],
                             platforms=(ride,))
 
 
@@ -82,7 +82,9 @@ def test_a_beam_keeps_one_state_a_tile_while_others_are_left() -> None:
 
 
 def test_a_stuck_beam_goes_back_a_few_layers_not_to_the_spawn() -> None:
-    search = _Search(ferry(), Effort(width=2))
+    # A fast ferry, met after a run from the far end of the map: one state wide, the
+    # beam misses it.
+    search = _Search(ferry_coming_back(80.0, SPAWN), Effort(width=1))
     layers: list[int] = []
     expand = search.children
 
