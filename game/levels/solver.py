@@ -215,7 +215,6 @@ class _Search:
         self.waits: dict[tuple[float, float, int], int] = {}
         self.moves_tried = 0
         self.states = 0
-        self.exhausted = False  # a beam kept every state it met: wider ones cannot help
         self.pit_penalty = 0.0  # the beams set it: see beam()
         periods = [2 * p.spec.path.length / p.spec.speed_px_s for p in self.world.platforms
                    if p.spec.speed_px_s > 0]
@@ -391,8 +390,7 @@ class _Search:
                     record, failures, width = best, 0, base
                 continue
             if not children and started_at == 0 and not dropped:
-                self.exhausted = True  # it kept every state it met, and all ended
-                return None
+                return None  # it kept every state it met, and all ended: wider cannot help
             failures += 1  # stuck: go back, and try again wider
             width = base * 2 ** failures
             back = max(0, depth - BACK_MOVES * 2 ** (failures - 1))
