@@ -26,6 +26,7 @@ from game.sim.solids import LevelSolids
 from game.sim.tuning import Tuning
 from game.sim.world import Event, EventKind, World
 from tests.maps import CEILING, LEDGE, MEASURED, level_from_ascii
+from tests.test_movement import glide
 
 T = 16
 TUNING = Tuning()
@@ -319,40 +320,28 @@ def half_tiles(cells: list[tuple[int, int]], inset: Box) -> TileGrid:
 def test_walking_across_100_seams_of_half_height_floor_tiles_never_stops() -> None:
     grid = half_tiles([(c, 10) for c in range(150)], Box(0, 8, T, 8))   # the lower half
     box = Box(0.0, 10 * T + 8 - 14, 12, 14)                           # feet on their top
-    for _ in range(1000):
-        move = move_x(grid, box, 1.7)
-        assert move.hit is None
-        box = move.box
+    box = glide(move_x, grid, box, 1.7, 1000)
     assert box.x == pytest.approx(1700)
 
 
 def test_sliding_under_100_seams_of_half_height_ceiling_tiles_never_stops() -> None:
     grid = half_tiles([(c, 10) for c in range(150)], Box(0, 0, T, 8))   # the upper half
     box = Box(0.0, 10 * T + 8, 12, 14)                                # head on their bottom
-    for _ in range(100):
-        move = move_x(grid, box, 16.0)
-        assert move.hit is None
-        box = move.box
+    box = glide(move_x, grid, box, 16.0, 100)
     assert box.x == 1600
 
 
 def test_falling_past_100_seams_of_half_width_tiles_on_the_left_never_stops() -> None:
     grid = half_tiles([(10, r) for r in range(150)], Box(0, 0, 8, T))   # the left half
     box = Box(10 * T + 8, 0.0, 12, 14)                                # left side on them
-    for _ in range(100):
-        move = move_y(grid, box, 16.0)
-        assert move.hit is None
-        box = move.box
+    box = glide(move_y, grid, box, 16.0, 100)
     assert box.y == 1600
 
 
 def test_falling_past_100_seams_of_half_width_tiles_on_the_right_never_stops() -> None:
     grid = half_tiles([(10, r) for r in range(150)], Box(8, 0, 8, T))   # the right half
     box = Box(10 * T + 8 - 12, 0.0, 12, 14)                           # right side on them
-    for _ in range(100):
-        move = move_y(grid, box, 16.0)
-        assert move.hit is None
-        box = move.box
+    box = glide(move_y, grid, box, 16.0, 100)
     assert box.y == 1600
 
 

@@ -2,14 +2,26 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import pytest
 
 from game.collision.aabb import Box
-from game.collision.axis_sweep import Side, ground_under, move_x, move_y
+from game.collision.axis_sweep import Move, Side, ground_under, move_x, move_y
 from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import CountedGrid, TileGrid
 
 T = 16
+
+
+def glide(move: Callable[[TileGrid, Box, float], Move], grid: TileGrid, box: Box,
+          step_px: float, moves: int) -> Box:
+    """Move ``box`` by ``step_px`` ``moves`` times along one axis; nothing may stop it."""
+    for _ in range(moves):
+        made = move(grid, box, step_px)
+        assert made.hit is None, f"stopped at {made.box} by {made.hit}"
+        box = made.box
+    return box
 
 
 def grid_with(cells: list[tuple[int, int]], kind: TileKind = TileKind.SOLID,
@@ -87,30 +99,21 @@ def test_the_nearest_of_several_walls_stops_the_body() -> None:
 def test_walking_across_100_tile_seams_on_a_floor_never_stops() -> None:
     grid = grid_with([(c, 10) for c in range(150)])
     box = Box(0.0, 10 * T - 14, 12, 14)
-    for _ in range(1000):
-        move = move_x(grid, box, 1.7)
-        assert move.hit is None
-        box = move.box
+    box = glide(move_x, grid, box, 1.7, 1000)
     assert box.x == pytest.approx(1700)
 
 
 def test_sliding_under_100_ceiling_seams_never_stops() -> None:
     grid = grid_with([(c, 10) for c in range(150)])
     box = Box(0.0, 11 * T, 12, 14)                 # head touching the ceiling's underside
-    for _ in range(100):
-        move = move_x(grid, box, 16.0)
-        assert move.hit is None
-        box = move.box
+    box = glide(move_x, grid, box, 16.0, 100)
     assert box.x == 1600
 
 
 def test_sliding_down_a_wall_across_100_seams_never_stops() -> None:
     grid = grid_with([(10, r) for r in range(150)])
     box = Box(10 * T - 12, 0.0, 12, 14)            # right side touching the wall
-    for _ in range(100):
-        move = move_y(grid, box, 16.0)
-        assert move.hit is None
-        box = move.box
+    box = glide(move_y, grid, box, 16.0, 100)
     assert box.y == 1600
 
 
