@@ -13,9 +13,11 @@ from pathlib import Path
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import TileGrid
+from game.sim.inputs import NOTHING, Action
 from game.sim.level import CoinSpec, EnemySpec, Level
 from game.sim.platforms import PlatformSpec
-from game.sim.world import Measure
+from game.sim.tuning import Tuning
+from game.sim.world import Measure, World
 
 TILE = 16
 KINDS = {"#": TileKind.SOLID, "-": TileKind.ONE_WAY, "^": TileKind.HAZARD}
@@ -145,3 +147,23 @@ CEILING = ["                    ",
            "                    ",
            "                    ",
            "####################"]
+
+
+def settled(rows: list[str], spawn: Box | None = None, tuning: Tuning | None = None) -> World:
+    """A world drawn from ASCII whose player has fallen onto its floor and stands still."""
+    world = World(level_from_ascii(rows, spawn=spawn), tuning or Tuning(), measure=MEASURED)
+    for _ in range(30):
+        world.step(NOTHING)
+    assert world.player.on_ground
+    return world
+
+
+def jump_under_the_ceiling_from(x: float) -> tuple[World, float]:
+    """Jump straight up under :data:`CEILING` from ``x``; return the world and the highest
+    its player's head got."""
+    world = settled(CEILING, spawn=Box(x, 6 * 16 - 14, 12, 14))
+    highest = world.player.box.top
+    for _ in range(30):
+        world.step(frozenset({Action.JUMP}))
+        highest = min(highest, world.player.box.top)
+    return world, highest

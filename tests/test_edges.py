@@ -25,7 +25,12 @@ from game.sim.query_log import LoggedSource, QueryLog
 from game.sim.solids import LevelSolids
 from game.sim.tuning import Tuning
 from game.sim.world import Event, EventKind, World
-from tests.maps import CEILING, LEDGE, MEASURED, level_from_ascii
+from tests.maps import (
+    LEDGE,
+    jump_under_the_ceiling_from,
+    level_from_ascii,
+    settled,
+)
 from tests.test_movement import glide
 
 T = 16
@@ -36,15 +41,6 @@ RIGHT_JUMP: Actions = frozenset({Action.RIGHT, Action.JUMP})
 DOWN_JUMP: Actions = frozenset({Action.DOWN, Action.JUMP})
 DOWN: Actions = frozenset({Action.DOWN})
 SOLID, ONE_WAY = TileKind.SOLID, TileKind.ONE_WAY
-
-
-def settled(rows: list[str], spawn: Box | None = None, tuning: Tuning = TUNING) -> World:
-    """A world whose player has fallen onto its floor and stands still."""
-    world = World(level_from_ascii(rows, spawn=spawn), tuning, measure=MEASURED)
-    for _ in range(30):
-        world.step(NOTHING)
-    assert world.player.on_ground
-    return world
 
 
 def jumped(events: Sequence[Event]) -> bool:
@@ -129,16 +125,6 @@ def test_a_jump_held_down_through_a_landing_does_not_jump_again() -> None:
 
 
 CEILING_LEFT, CEILING_RIGHT, CEILING_BOTTOM = 5 * T, 9 * T, 3 * T  # of maps.CEILING
-
-
-def jump_under_the_ceiling_from(x: float) -> tuple[World, float]:
-    """Jump straight up from ``x``; return the world and the highest its head got."""
-    world = settled(CEILING, spawn=Box(x, 6 * T - 14, 12, 14))
-    highest = world.player.box.top
-    for _ in range(30):
-        world.step(JUMP)
-        highest = min(highest, world.player.box.top)
-    return world, highest
 
 
 def test_a_jump_clipping_a_ceilings_left_corner_by_4_px_slides_past_it() -> None:

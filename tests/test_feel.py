@@ -4,26 +4,22 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from game.collision.aabb import Box
 from game.sim.campaign import Campaign
 from game.sim.inputs import NOTHING, Action, Actions
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
-from tests.maps import CEILING, LEDGE, MEASURED, level_from_ascii
+from tests.maps import (
+    LEDGE,
+    jump_under_the_ceiling_from,
+    level_from_ascii,
+    settled,
+)
 
 RIGHT: Actions = frozenset({Action.RIGHT})
 JUMP: Actions = frozenset({Action.JUMP})
 RIGHT_JUMP: Actions = frozenset({Action.RIGHT, Action.JUMP})
 DOWN_JUMP: Actions = frozenset({Action.DOWN, Action.JUMP})
 TUNING = Tuning()
-
-
-def settled(rows: list[str], tuning: Tuning = TUNING, spawn: Box | None = None) -> World:
-    world = World(level_from_ascii(rows, spawn=spawn), tuning, measure=MEASURED)
-    for _ in range(30):
-        world.step(NOTHING)
-    assert world.player.on_ground
-    return world
 
 
 FLOOR = ["                              ",
@@ -134,13 +130,7 @@ def rise_under_ceiling_corner(overlap_px: float) -> tuple[World, float]:
 
     Returns the world after the jump and the highest the head got.
     """
-    spawn = Box(5 * 16 - 12 + overlap_px, 6 * 16 - 14, 12, 14)
-    world = settled(CEILING, spawn=spawn)
-    highest = world.player.box.top
-    for _ in range(30):
-        world.step(JUMP)
-        highest = min(highest, world.player.box.top)
-    return world, highest
+    return jump_under_the_ceiling_from(5 * 16 - 12 + overlap_px)
 
 
 def test_a_jump_that_clips_a_ceiling_corner_by_3_px_slides_past_it() -> None:
