@@ -23,3 +23,23 @@ def assets() -> Iterator[Assets]:
     pygame.display.set_mode((320, 180))
     yield load_assets()
     pygame.display.quit()
+
+
+@pytest.fixture
+def display() -> Iterator[None]:
+    """A 320x180 display for tests that draw the game's screens; closed afterwards."""
+    pygame.display.init()
+    pygame.display.set_mode((320, 180))
+    yield
+    pygame.display.quit()
+
+
+@pytest.fixture
+def lab_display() -> Iterator[None]:
+    """A display, fonts and an empty event queue, for the lab's scenes."""
+    pygame.display.init()
+    pygame.font.init()
+    pygame.display.set_mode((1, 1))
+    pygame.event.clear()
+    yield
+    pygame.event.clear()

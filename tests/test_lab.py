@@ -12,7 +12,6 @@ import os
 import re
 import subprocess
 import sys
-from collections.abc import Iterator
 from pathlib import Path
 
 import pygame
@@ -48,14 +47,7 @@ ROOT = Path(__file__).resolve().parent.parent
 NAMES = [scene.name for scene in SCENES]
 
 
-@pytest.fixture(autouse=True)
-def display() -> Iterator[None]:
-    pygame.display.init()
-    pygame.font.init()
-    pygame.display.set_mode((1, 1))
-    pygame.event.clear()
-    yield
-    pygame.event.clear()
+pytestmark = pytest.mark.usefixtures("lab_display")
 
 
 # --- posting events ------------------------------------------------------------------------

@@ -7,7 +7,6 @@ and read back from the panel."""
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -28,14 +27,7 @@ NAMES = [scene.name for scene in SCENES]
 TIMING_FRAMES = 5
 
 
-@pytest.fixture(autouse=True)
-def display() -> Iterator[None]:
-    pygame.display.init()
-    pygame.font.init()
-    pygame.display.set_mode((1, 1))
-    pygame.event.clear()
-    yield
-    pygame.event.clear()
+pytestmark = pytest.mark.usefixtures("lab_display")
 
 
 def post(kind: int, **fields: Any) -> None:

@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import ast
 import json
-from collections.abc import Iterator
 from pathlib import Path
 
 import pygame
@@ -57,12 +56,6 @@ class Frames:
         self.flips_by_frame: list[int] = []
 
 
-@pytest.fixture
-def display() -> Iterator[None]:
-    pygame.display.init()
-    pygame.display.set_mode((320, 180))
-    yield
-    pygame.display.quit()
 
 
 def play(batches: list[list[pygame.event.Event]], monkeypatch: pytest.MonkeyPatch,
