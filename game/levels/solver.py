@@ -103,7 +103,7 @@ MAX_WAIT_TICKS = 36_000  # no wait is longer than this (10 minutes of play)
 
 @dataclass(frozen=True)
 class Effort:
-    """How hard to look: the beam widths tried in turn, and the limits on each try."""
+    """How hard to look: the beam's width where it is not stuck, and the limits on the work."""
 
     budget: int = DEFAULT_BUDGET  # moves the whole search may try: the bound on its work
     greedy_moves: int = 14_000  # of those, the most the best-first search may try first
@@ -215,7 +215,7 @@ class _Search:
         self.waits: dict[tuple[float, float, int], int] = {}
         self.moves_tried = 0
         self.states = 0
-        self.pit_penalty = 0.0  # the beams set it: see beam()
+        self.pit_penalty = 0.0  # the beams set it: see beams()
         periods = [2 * p.spec.path.length / p.spec.speed_px_s for p in self.world.platforms
                    if p.spec.speed_px_s > 0]
         self.round_trip_ticks = math.ceil(min(max(periods, default=0.0) / self.world.tuning.tick_s,
