@@ -103,6 +103,21 @@ def test_stepping_on_after_a_snapshot_does_not_change_it() -> None:
     assert state(world) == before
 
 
+def test_an_attribute_first_seen_as_none_is_copied_once_it_holds_a_list() -> None:
+    world = World(load_level(FIRST))
+    camera = world.camera
+    camera.trail = None  # type: ignore[attr-defined]  # a name the snapshot has not met
+    Snapshot.of(world)
+    camera.trail = [1]  # type: ignore[attr-defined]
+    saved = Snapshot.of(world)
+    camera.trail.append(2)  # type: ignore[attr-defined]
+    saved.restore(world)
+    assert camera.trail == [1]  # type: ignore[attr-defined]
+    camera.trail.append(3)  # type: ignore[attr-defined]
+    saved.restore(world)
+    assert camera.trail == [1]  # type: ignore[attr-defined]
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
 def test_the_solver_solves_every_shipped_level_within_the_default_budget(level: Path) -> None:

@@ -275,8 +275,8 @@ class _Search:
             self.deadline is not None and time.monotonic() > self.deadline)
 
     def run(self) -> Node | None:
-        """Best first (on a level without moving platforms), then ever wider beams, until a
-        route is found or the budget is spent."""
+        """Best first (on a level without moving platforms), then beams that widen where
+        they are stuck, until a route is found or the budget is spent."""
         if not self.world.platforms:  # waiting never looks better to a best-first search
             found = self.best_first(min(self.effort.greedy_moves, self.effort.budget))
             if found is not None or self.out_of_time():
