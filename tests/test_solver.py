@@ -342,5 +342,5 @@ def test_the_wait_move_is_offered_only_near_a_moving_platform_and_counts_its_tic
     for _ in range(60):  # let the player land at the spawn and stand still
         ferry.world.step(frozenset())
     assert ferry.world.player.on_ground and not ferry.waiting_helps()  # no route near
-    ferry.try_move(frozenset(), WAIT_TICKS)
+    ferry.try_move(Snapshot.of(ferry.world), 60, frozenset(), WAIT_TICKS)
     assert ferry.moves_tried == -(-WAIT_TICKS // MOVE_TICKS)

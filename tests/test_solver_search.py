@@ -16,7 +16,6 @@ from game.levels.solver import (
     UNTIL_A_PLATFORM_COMES,
     Effort,
     Node,
-    _gap,
     _Search,
 )
 from game.sim.level import Level
@@ -47,9 +46,9 @@ def test_the_wait_for_a_platform_ends_on_the_tick_it_comes() -> None:
     player = search.world.player
     for _ in range(coming - 1):
         search.world.step(frozenset())
-        assert _gap(player.box, platform.box) > COMES_PX
+        assert player.box.gap(platform.box) > COMES_PX
     search.world.step(frozenset())
-    assert _gap(player.box, platform.box) <= COMES_PX
+    assert player.box.gap(platform.box) <= COMES_PX
 
 
 def test_the_wait_is_one_child_that_counts_the_moves_its_ticks_take() -> None:

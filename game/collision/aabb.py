@@ -168,6 +168,16 @@ class Box(NamedTuple):
         depth_y = min(self.bottom, other.bottom) - max(self.y, other.y)
         return min(depth_x, depth_y)
 
+    def gap(self, other: Box) -> float:
+        """How far apart the two boxes are along the farther axis; 0.0 when they touch or
+        overlap.
+
+        >>> Box(0, 0, 10, 10).gap(Box(25, 3, 10, 10))
+        15
+        """
+        return max(0.0, other.left - self.right, self.left - other.right,
+                   other.top - self.bottom, self.top - other.bottom)
+
     def is_finite(self) -> bool:
         """False if any field is NaN or infinite: such a box must never become a Rect.
 

@@ -20,6 +20,9 @@ What it teaches: a **beam search** over a deterministic simulation.
   counts as the moves its ticks would take, so the budget still measures the work done.
 * **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
   state, step the world, keep the child's state.
+* **Enemies go their own way** (:mod:`game.levels.enemy_timeline`): where an enemy is at a
+  tick does not depend on the player, so the first move through a tick writes the enemies
+  down and later moves leave out those far from the player, putting them back afterwards.
 * **A layer per move.** All children of the current beam are scored by how far they still
   are from an Exit, and the best :attr:`Effort.width` survive, at most :data:`PER_CELL` of
   them in any one tile while others are left: a beam whose states all stand in one place is
@@ -69,6 +72,7 @@ from pathlib import Path
 
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind
+from game.levels.enemy_timeline import Away, EnemyTimeline
 from game.levels.loader import load_level
 from game.levels.reachable import steps_to_exit
 from game.levels.search_key import StateKey, route_box, route_is_near, state_key
@@ -203,6 +207,7 @@ class _Search:
         self.level = level
         self.effort = effort
         self.world = World(level)
+        self.timeline = EnemyTimeline(self.world)
         self.steps = steps_to_exit(World(level)) or distances_to_exit(level)
         self.start = Snapshot.of(self.world)
         self.goal_cells = [cell for cell, steps in self.steps.items() if steps == 0]
@@ -253,11 +258,11 @@ class _Search:
         soonest: int | None = None
         for platform, region in zip(self.world.platforms, self.routes, strict=True):
             if (platform.speed_px_s <= 0 or not route_is_near(box, region)
-                    or _gap(box, platform.box) <= COMES_PX):
+                    or box.gap(platform.box) <= COMES_PX):
                 continue
             step = platform.speed_px_s * dt
             for ticks in range(1, min(self.round_trip_ticks, soonest or MAX_WAIT_TICKS) + 1):
-                if _gap(box, platform.box_at(platform.travelled_px + step * ticks)) <= COMES_PX:
+                if box.gap(platform.box_at(platform.travelled_px + step * ticks)) <= COMES_PX:
                     soonest = ticks
                     break
         return soonest
@@ -303,7 +308,7 @@ class _Search:
                     continue  # none comes, or a wait here already met this platform
                 self.waits[(box.x, box.y, ticks + coming)] = layer
                 move_ticks = coming
-            outcome = self.try_move(choice, move_ticks)
+            outcome = self.try_move(snapshot, ticks, choice, move_ticks)
             lost = node.lives_lost if node is not None else 0
             if outcome < 0:
                 lost += 1
@@ -427,22 +432,48 @@ class _Search:
                 later.append((snapshot, node))
         return kept + later[:width - len(kept)]
 
-    def try_move(self, choice: Actions, move_ticks: int = MOVE_TICKS) -> int:
-        """Hold ``choice`` for one move: +ticks if an Exit was reached on that tick, else
-        -1 if a life was lost on the way (the world has put the player back), 0 if not."""
+    def try_move(self, snapshot: Snapshot, start: int, choice: Actions,
+                 move_ticks: int = MOVE_TICKS) -> int:
+        """Hold ``choice`` for one move from ``snapshot`` (taken at tick ``start``, and
+        restored already): +ticks if an Exit was reached on that tick, else -1 if a life was
+        lost on the way (the world has put the player back), 0 if not.
+
+        Enemies far from the player are left out while it steps (:mod:`.enemy_timeline`);
+        if the player comes close to one after all, the move is made again with all of them.
+        """
         self.moves_tried += math.ceil(move_ticks / MOVE_TICKS)  # a wait counts its ticks
+        away = self.timeline.away(start, move_ticks)
+        if away:
+            outcome = self.hold(choice, start, move_ticks, away)
+            if outcome is not None:
+                return outcome
+            snapshot.restore(self.world)
+        outcome = self.hold(choice, start, move_ticks, ())
+        assert outcome is not None  # with no enemy left out, nothing is made again
+        return outcome
+
+    def hold(self, choice: Actions, start: int, move_ticks: int, away: Away) -> int | None:
+        """Step the world ``move_ticks`` ticks holding ``choice``, with the enemies ``away``
+        left out of play: the outcome of :meth:`try_move`, or None if the player came close
+        to an enemy left out."""
+        timeline = self.timeline
+        if away:
+            timeline.leave_out(away)
         hurt = False
         for tick in range(1, move_ticks + 1):
-            for event in self.world.step(choice):
+            events = self.world.step(choice)
+            if away and not timeline.clear_of(away, start + tick):
+                return None
+            timeline.write_down(start + tick)
+            for event in events:
                 if event.kind is EventKind.EXIT:
+                    if away:
+                        timeline.put_back(away, start + tick)
                     return tick
                 hurt = hurt or event.kind is EventKind.HURT
+        if away:
+            timeline.put_back(away, start + move_ticks)
         return -1 if hurt else 0
-
-
-def _gap(a: Box, b: Box) -> float:
-    """How far apart two boxes are (0 when they touch or overlap), along the farther axis."""
-    return max(0.0, b.left - a.right, a.left - b.right, b.top - a.bottom, a.top - b.bottom)
 
 
 def _held_per_tick(node: Node | None) -> list[Actions]:

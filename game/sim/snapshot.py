@@ -97,7 +97,7 @@ def _recipe(thing: object, state: dict[str, Any]) -> _Recipe:
     return recipe
 
 
-def _attributes(thing: object) -> dict[str, Any]:
+def state_of(thing: object) -> dict[str, Any]:
     """The attributes of ``thing`` that a tick may change, copied one level deep."""
     state = vars(thing)
     recipe = _recipe(thing, state)
@@ -108,6 +108,22 @@ def _attributes(thing: object) -> dict[str, Any]:
         if name in saved:
             saved[name] = saved[name].copy()
     return saved
+
+
+def put_state(thing: object, saved: dict[str, Any]) -> None:
+    """Write back into ``thing`` the attributes :func:`state_of` took (``saved`` stays as
+    it is, so it can be written back again)."""
+    current = vars(thing)
+    recipe = _RECIPES[type(thing)]
+    if current.keys() - saved.keys() - recipe.apart:
+        # An attribute set since the state was taken was a class default then: drop it, so
+        # the default shows through again.
+        for name in current.keys() - saved.keys() - recipe.apart:
+            del current[name]
+    current.update(saved)
+    for name in recipe.copied:
+        if name in saved:
+            current[name] = saved[name].copy()
 
 
 def _changing_things(world: World) -> list[object]:
@@ -141,23 +157,13 @@ class Snapshot:
     @classmethod
     def of(cls, world: World) -> Snapshot:
         groups = _groups(world)
-        return cls(tuple((thing, _attributes(thing)) for thing in _changing_things(world)),
+        return cls(tuple((thing, state_of(thing)) for thing in _changing_things(world)),
                    tuple((group, tuple(group.sprites())) for group in groups))
 
     def restore(self, world: World) -> None:
         """Put ``world`` back as it was when this snapshot was taken."""
         for thing, saved in self.attributes:
-            current = vars(thing)
-            recipe = _RECIPES[type(thing)]
-            if current.keys() - saved.keys() - recipe.apart:
-                # An attribute set since the snapshot was a class default then: drop it, so
-                # the default shows through again.
-                for name in current.keys() - saved.keys() - recipe.apart:
-                    del current[name]
-            current.update(saved)
-            for name in recipe.copied:
-                if name in saved:
-                    current[name] = saved[name].copy()
+            put_state(thing, saved)
         for group, sprites in self.members:
             if tuple(group.sprites()) != sprites:
                 group.empty()

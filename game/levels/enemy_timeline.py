@@ -1,0 +1,101 @@
+"""Enemies go their own way: where each one is at each tick, written down once for a search.
+
+Where it sits: inside :mod:`game.levels.solver`, around every move the search tries.
+
+What it teaches: **leaving out what a choice cannot change.** An enemy meets only the walls,
+the moving platforms and the player's stomp (:meth:`game.sim.world.World.step`): where it
+walks does not depend on what the player does. So its state at a given tick is the same in
+every branch of the search in which it is still alive. The first move to step through a tick
+writes down the state of each enemy in play (:meth:`EnemyTimeline.write_down`); a later move
+from the same tick leaves out of the world the enemies far from the player
+(:meth:`EnemyTimeline.away`), steps without them, and puts them back as they were written
+down (:meth:`EnemyTimeline.put_back`). On The Summit, whose seven enemies cost more than half
+of a tick, a move costs less than half as much.
+
+It stays exact. After every tick of a move made without some enemies, the player's path that
+tick is compared with the place written down for each of them (:meth:`EnemyTimeline.clear_of`);
+if the two come within :data:`CLOSE_PX`, or the player loses a life (the respawn may put it
+anywhere), the move is made again with every enemy in play. A touch is the only way an enemy
+changes the player's tick, so a move that passed the comparison on every tick ends exactly as
+it would have with every enemy. Every route the solver finds is replayed by the game as well.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from game.sim.enemy import Enemy
+from game.sim.snapshot import put_state, state_of
+from game.sim.world import World
+
+AWAY_PX = 48.0  # an enemy is left out of a move only if this much farther off than the
+#                 player and it could both travel during the move
+CLOSE_PX = 1.0  # a player's path this close to a left-out enemy makes the move again in full
+MAX_STATES = 200_000  # states written down at most (about 250 bytes each): bounds the memory
+
+Away = Sequence[tuple[int, Enemy]]  # the enemies left out of a move, with their numbers
+
+
+class EnemyTimeline:
+    """The state of every enemy at every tick some move has stepped through, by number."""
+
+    def __init__(self, world: World) -> None:
+        self.world = world
+        self.enemies = list(world.enemy_by_number.items())
+        tuning = world.tuning
+        speeds = (tuning.run_speed_px_s, tuning.jump_speed_px_s, tuning.max_fall_speed_px_s,
+                  tuning.stomp_bounce_px_s, tuning.hopper_jump_speed_px_s,
+                  *(enemy.speed_px_s for _, enemy in self.enemies))
+        carried = max((platform.speed_px_s for platform in world.platforms), default=0.0)
+        self.fastest_px_per_tick = (max(speeds) + carried) * tuning.tick_s  # player or enemy
+        self.states: dict[tuple[int, int], dict[str, Any]] = {}  # (tick, number): attributes
+
+    def write_down(self, tick: int) -> None:
+        """Write down the state of each enemy in play at ``tick``, unless known already."""
+        states = self.states
+        if len(states) >= MAX_STATES:
+            return
+        for number, enemy in self.enemies:
+            if (tick, number) not in states and enemy.alive():
+                states[(tick, number)] = state_of(enemy)
+
+    def away(self, start: int, ticks: int) -> list[tuple[int, Enemy]]:
+        """The enemies a move of ``ticks`` ticks from tick ``start`` may leave out: in play,
+        written down at every tick of the move, and too far from the player to meet it."""
+        if not self.states:
+            return []
+        player = self.world.player.box
+        apart = 2 * self.fastest_px_per_tick * ticks + AWAY_PX
+        states = self.states
+        return [(number, enemy) for number, enemy in self.enemies
+                if enemy.alive() and player.gap(enemy.box) > apart
+                and all((start + tick, number) in states for tick in range(1, ticks + 1))]
+
+    def leave_out(self, away: Away) -> None:
+        """Take ``away`` out of play (out of the world's enemies) for a move."""
+        self.world.enemies.remove(*(enemy for _, enemy in away))
+
+    def clear_of(self, away: Away, tick: int) -> bool:
+        """Did the player's path at ``tick`` keep more than :data:`CLOSE_PX` from where each
+        enemy left out was then, without losing a life?"""
+        path = self.world.moves.get(self.world.player)
+        if path is None:  # a life was lost, and the player put back at a respawn place
+            return False
+        left, top, right, bottom = path.reach()
+        for number, _ in away:
+            x, y, w, h = self.states[(tick, number)]["box"]
+            if (x - CLOSE_PX < right and left < x + w + CLOSE_PX
+                    and y - CLOSE_PX < bottom and top < y + h + CLOSE_PX):
+                return False
+        return True
+
+    def put_back(self, away: Away, tick: int) -> None:
+        """Put ``away`` back in play as each was written down at ``tick``, in the order the
+        world keeps its enemies."""
+        for number, enemy in away:
+            put_state(enemy, self.states[(tick, number)])
+        back = {number for number, _ in away}
+        in_play = [enemy for number, enemy in self.enemies if number in back or enemy.alive()]
+        self.world.enemies.empty()
+        self.world.enemies.add(*in_play)
