@@ -40,7 +40,7 @@ from __future__ import annotations
 import math
 from collections import deque
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from game.collision.aabb import Box
 from game.collision.axis_sweep import ground_under
@@ -208,6 +208,8 @@ class Reach:
     cells: set[Cell]
     touches_exit: bool
     targets: set[Cell]
+    # for each cell, the fewest steps of the fill from it to a target (the jump fill only)
+    steps: dict[Cell, int] = field(default_factory=dict)
 
     def nearest_to_exit(self) -> Cell | None:
         """The reached cell closest (as the crow flies) to an Exit's cells."""
@@ -457,11 +459,13 @@ def steps_to_exit(world: World) -> dict[Cell, int] | None:
     moved) to a cell where the player touches an Exit; a cell from which no step leads
     there is left out. None when the tuning gives no bound. A guide for the search: a place
     left out is one from which, by the proof above, no route can go on to an Exit."""
-    envelope = envelope_of(world.level, world.tuning)
-    if envelope is None:
-        return None
-    fill = _JumpFill(world.level, envelope, world.spawn)
-    reach = _flood(world, fill)
+    reach = reachable(world)
+    return None if reach is None else reach.steps
+
+
+def _steps_back(fill: _JumpFill, reach: Reach) -> dict[Cell, int]:
+    """:attr:`Reach.steps`: a breadth-first walk back along the fill's moves from the
+    targets (a moving platform's cells all join through one node: its ride)."""
     back: dict[Cell, list[Cell]] = {}
     for cell, nears in fill.moves.items():
         for near in nears:
@@ -484,9 +488,13 @@ def steps_to_exit(world: World) -> dict[Cell, int] | None:
 
 def reachable(world: World) -> Reach | None:
     """The jump envelope's fill from the spawn (and each checkpoint's respawn once met), for
-    the world's level and tuning; None when the tuning gives no bound (a jump that never
-    comes down)."""
+    the world's level and tuning, with the steps back to an Exit from each cell it reached
+    (:func:`steps_to_exit`); None when the tuning gives no bound (a jump that never comes
+    down)."""
     envelope = envelope_of(world.level, world.tuning)
     if envelope is None:
         return None
-    return _flood(world, _JumpFill(world.level, envelope, world.spawn))
+    fill = _JumpFill(world.level, envelope, world.spawn)
+    reach = _flood(world, fill)
+    reach.steps = _steps_back(fill, reach)
+    return reach

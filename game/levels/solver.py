@@ -203,12 +203,14 @@ def distances_to_exit(level: Level) -> dict[tuple[int, int], int]:
 class _Search:
     """One level's search state: the world it steps, the score and what it has seen."""
 
-    def __init__(self, level: Level, effort: Effort) -> None:
+    def __init__(self, level: Level, effort: Effort,
+                 steps: dict[tuple[int, int], int] | None = None) -> None:
         self.level = level
         self.effort = effort
         self.world = World(level)
         self.timeline = EnemyTimeline(self.world)
-        self.steps = steps_to_exit(World(level)) or distances_to_exit(level)
+        self.steps = (steps if steps is not None else steps_to_exit(World(level))
+                      ) or distances_to_exit(level)
         self.start = Snapshot.of(self.world)
         self.goal_cells = [cell for cell, steps in self.steps.items() if steps == 0]
         self.lives = self.world.tuning.start_lives
@@ -502,9 +504,11 @@ def replay(level_path: Path, held: Sequence[Actions], level: Level | None = None
     return campaign.levels_completed > 0, route
 
 
-def solve(level: Level, effort: Effort | None = None) -> Solution:
-    """Search ``level`` for a route from the spawn to an Exit."""
-    search = _Search(level, effort or Effort())
+def solve(level: Level, effort: Effort | None = None,
+          steps: dict[tuple[int, int], int] | None = None) -> Solution:
+    """Search ``level`` for a route from the spawn to an Exit (``steps``: the reach proof's
+    :attr:`~game.levels.reachable.Reach.steps`, when worked out already)."""
+    search = _Search(level, effort or Effort(), steps)
     found = search.run() if level.exits else None
     held = _held_per_tick(found)
     if found is not None:

@@ -56,11 +56,12 @@ def _cell_of(level: Level, x: float, y: float) -> Cell:
     return math.floor(x / level.grid.tile_w), math.floor(y / level.grid.tile_h)
 
 
-def prove_impossible(level: Level) -> Verdict | None:
-    """An IMPOSSIBLE verdict if the cells or the reach show no route can exist, else None."""
+def prove_impossible(level: Level) -> tuple[Verdict | None, Reach | None]:
+    """An IMPOSSIBLE verdict if the cells or the reach show no route can exist (else None),
+    and the player's reach where it was worked out (the search is guided by its steps)."""
     world = World(level)
     if not level.exits:
-        return None
+        return None, None
     sealed = open_path(world)
     if not sealed.touches_exit:
         culprit = _closing_layer(world)
@@ -72,7 +73,7 @@ def prove_impossible(level: Level) -> Verdict | None:
         return Verdict(Kind.IMPOSSIBLE, sealed.nearest_to_exit(),
                        "impossible: no open path joins the spawn and an Exit; Solid tiles "
                        f"close every way{blame}; this is the nearest open place to an Exit",
-                       fix, reach=sealed)
+                       fix, reach=sealed), None
     reach = reachable(world)
     if reach is not None and not reach.touches_exit:
         return Verdict(Kind.IMPOSSIBLE, reach.nearest_to_exit(),
@@ -80,8 +81,8 @@ def prove_impossible(level: Level) -> Verdict | None:
                        "touch; this is the nearest place they reach",
                        "lower the ledges or narrow the gaps on the way (see the player's "
                        "reach in the summary), or move the Exit",
-                       reach=reach)
-    return None
+                       reach=reach), reach
+    return None, reach
 
 
 def _closing_layer(world: World) -> str | None:
@@ -102,10 +103,10 @@ def _closing_layer(world: World) -> str | None:
 
 def judge(level: Level, effort: Effort, command: str = "python -m game.levels") -> Verdict:
     """Prove ``level`` impossible, else search it: solved, or honestly not decided."""
-    impossible = prove_impossible(level)
+    impossible, reach = prove_impossible(level)
     if impossible is not None:
         return impossible
-    solution = solve(level, effort)
+    solution = solve(level, effort, reach.steps if reach is not None else None)
     if solution.found:
         return Verdict(Kind.SOLVED, None, f"solved: a route reaches an Exit at tick "
                        f"{solution.exit_tick}", "", solution)

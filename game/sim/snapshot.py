@@ -85,6 +85,7 @@ class _Recipe:
 
 
 _RECIPES: dict[type, _Recipe] = {}
+Members = tuple[tuple[pygame.sprite.AbstractGroup[Any], tuple[pygame.sprite.Sprite, ...]], ...]
 
 
 def _recipe(thing: object, state: dict[str, Any]) -> _Recipe:
@@ -126,19 +127,17 @@ def put_state(thing: object, saved: dict[str, Any]) -> None:
             current[name] = saved[name].copy()
 
 
-def _changing_things(world: World) -> list[object]:
+def _changing_things(world: World, members: Members) -> list[object]:
     """The world and every object of it whose attributes may change while it plays: its
-    camera and contact tracker, every enemy (alive or not) and every sprite in any
-    of its groups."""
+    camera and contact tracker, every enemy (alive or not) and every sprite in any of its
+    groups (``members``: each group with its sprites)."""
     things: dict[int, object] = {}
-    for thing in (world, world.camera, world.contacts,
-                  *world.enemy_by_number.values(), *_groups(world)):
-        things.setdefault(id(thing), thing)
-    for group in _groups(world):
-        for sprite in group.sprites():
-            things.setdefault(id(sprite), sprite)
-    return [thing for thing in things.values()
-            if not isinstance(thing, pygame.sprite.AbstractGroup)]
+    for thing in (world, world.camera, world.contacts, *world.enemy_by_number.values()):
+        things[id(thing)] = thing
+    for _, sprites in members:
+        for sprite in sprites:
+            things[id(sprite)] = sprite
+    return list(things.values())
 
 
 def _groups(world: World) -> list[pygame.sprite.AbstractGroup[Any]]:
@@ -151,14 +150,13 @@ class Snapshot:
     """The changing state of one world at one tick."""
 
     attributes: tuple[tuple[object, dict[str, Any]], ...]
-    members: tuple[tuple[pygame.sprite.AbstractGroup[Any], tuple[pygame.sprite.Sprite, ...]],
-                   ...]
+    members: Members
 
     @classmethod
     def of(cls, world: World) -> Snapshot:
-        groups = _groups(world)
-        return cls(tuple((thing, state_of(thing)) for thing in _changing_things(world)),
-                   tuple((group, tuple(group.sprites())) for group in groups))
+        members = tuple((group, tuple(group.sprites())) for group in _groups(world))
+        return cls(tuple((thing, state_of(thing)) for thing in _changing_things(world, members)),
+                   members)
 
     def restore(self, world: World) -> None:
         """Put ``world`` back as it was when this snapshot was taken."""
