@@ -29,8 +29,8 @@ from game.sim.enemy import Enemy
 from game.sim.snapshot import put_state, state_of
 from game.sim.world import World
 
-AWAY_PX = 48.0  # an enemy is left out of a move only if this much farther off than the
-#                 player and it could both travel during the move
+AWAY_PX = 16.0  # an enemy is left out of a move only if this much farther off, along x or
+#                 along y, than it and the player could close in during the move
 CLOSE_PX = 1.0  # a player's path this close to a left-out enemy makes the move again in full
 MAX_STATES = 200_000  # states written down at most (about 250 bytes each): bounds the memory
 
@@ -44,11 +44,14 @@ class EnemyTimeline:
         self.world = world
         self.enemies = list(world.enemy_by_number.items())
         tuning = world.tuning
-        speeds = (tuning.run_speed_px_s, tuning.jump_speed_px_s, tuning.max_fall_speed_px_s,
-                  tuning.stomp_bounce_px_s, tuning.hopper_jump_speed_px_s,
-                  *(enemy.speed_px_s for _, enemy in self.enemies))
-        carried = max((platform.speed_px_s for platform in world.platforms), default=0.0)
-        self.fastest_px_per_tick = (max(speeds) + carried) * tuning.tick_s  # player or enemy
+        walking = max((enemy.speed_px_s for _, enemy in self.enemies), default=0.0)
+        rising = max(tuning.jump_speed_px_s, tuning.stomp_bounce_px_s)
+        carried = 2 * max((platform.speed_px_s for platform in world.platforms), default=0.0)
+        # how fast the player and an enemy may close in on each other, along x and along y
+        self.closing_x_px_per_tick = (tuning.run_speed_px_s + walking + carried) * tuning.tick_s
+        self.closing_y_px_per_tick = (max(rising, tuning.max_fall_speed_px_s)
+                                      + max(tuning.hopper_jump_speed_px_s,
+                                            tuning.max_fall_speed_px_s) + carried) * tuning.tick_s
         self.states: dict[tuple[int, int], dict[str, Any]] = {}  # (tick, number): attributes
 
     def write_down(self, tick: int) -> None:
@@ -65,12 +68,19 @@ class EnemyTimeline:
         written down at every tick of the move, and too far from the player to meet it."""
         if not self.states:
             return []
-        player = self.world.player.box
-        apart = 2 * self.fastest_px_per_tick * ticks + AWAY_PX
+        x, y, w, h = self.world.player.box
+        apart_x = self.closing_x_px_per_tick * ticks + AWAY_PX
+        apart_y = self.closing_y_px_per_tick * ticks + AWAY_PX
         states = self.states
-        return [(number, enemy) for number, enemy in self.enemies
-                if enemy.alive() and player.gap(enemy.box) > apart
-                and all((start + tick, number) in states for tick in range(1, ticks + 1))]
+        away: list[tuple[int, Enemy]] = []
+        for number, enemy in self.enemies:
+            e_x, e_y, e_w, e_h = enemy.box
+            if (enemy.alive()
+                    and (e_x - (x + w) > apart_x or x - (e_x + e_w) > apart_x
+                         or e_y - (y + h) > apart_y or y - (e_y + e_h) > apart_y)
+                    and all((start + tick, number) in states for tick in range(1, ticks + 1))):
+                away.append((number, enemy))
+        return away
 
     def leave_out(self, away: Away) -> None:
         """Take ``away`` out of play (out of the world's enemies) for a move."""

@@ -48,6 +48,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass, field
 from enum import Enum
+from types import MappingProxyType
 
 import pygame
 
@@ -153,7 +154,7 @@ class World:
         self.tuning = self.tuning.with_map_properties(self.level.properties)
         self.platforms: pygame.sprite.Group[Platform] = pygame.sprite.Group(
             Platform(spec, number) for number, spec in enumerate(self.level.platforms))
-        self._platform_list = list(self.platforms)
+        self._platform_list = tuple(self.platforms)  # by number; never changes
         self.platform_index = PlatformIndex(self.level.grid, self._platform_list)
         # The level's tiles with this world's platforms beside them: what every lookup asks.
         self.grid = self.level.grid
@@ -165,7 +166,7 @@ class World:
         self.moves: dict[Body, BodyMoves] = {}  # the last tick's moves (the overlay draws them)
         self.checkpoints: pygame.sprite.Group[Checkpoint] = pygame.sprite.Group(
             Checkpoint(box) for box in self.level.checkpoints)
-        self._checkpoint_list = list(self.checkpoints)  # by number; a flag never leaves play
+        self._checkpoint_list = tuple(self.checkpoints)  # by number; a flag never leaves play
         self.checkpoint_reached: int | None = None
         self.checkpoints_counted: set[int] = set()  # each moves the respawn point once
         self.squashed: pygame.sprite.Group[Squashed] = pygame.sprite.Group()  # drawn only
@@ -182,7 +183,8 @@ class World:
             Coin(spec.box, spec.value) for spec in self.level.coins)
         self.exits: pygame.sprite.Group[Exit] = pygame.sprite.Group(
             Exit(box) for box in self.level.exits)
-        self.enemy_by_number = dict(enumerate(self.enemies))
+        # every enemy by number, stomped or not (read-only: a snapshot need not copy it)
+        self.enemy_by_number = MappingProxyType(dict(enumerate(self.enemies)))
         self.trigger_cells = TriggerCells(self.grid.tile_w, self.grid.tile_h)
         for trigger in (*self.coins, *self.exits, *self.checkpoints):
             self.trigger_cells.file(trigger.box)
