@@ -18,6 +18,7 @@ from game.levels.solver import (
     Node,
     _Search,
 )
+from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.snapshot import Snapshot
@@ -99,3 +100,31 @@ def test_a_stuck_beam_goes_back_a_few_layers_not_to_the_spawn() -> None:
     assert back, "the narrow beam was never stuck: the map no longer tests going back"
     stuck, again = back[0]
     assert again == stuck - BACK_MOVES and again > 1
+
+
+def test_in_the_air_every_move_steers_unless_it_carries_on_as_the_one_before() -> None:
+    level = level_from_boxes(COLS, ROWS, [Box(0, FLOOR, WIDTH, 64)], SPAWN, [exit_on(FLOOR)])
+    search = _Search(level, Effort())
+    for _ in range(10):  # land at the spawn, standing still
+        search.world.step(frozenset())
+    on_ground = Snapshot.of(search.world)
+    tried: list[frozenset[Action]] = []
+
+    def try_move(snapshot: Snapshot, start: int, choice: frozenset[Action],
+                 move_ticks: int = MOVE_TICKS) -> int:
+        tried.append(choice)
+        return 0  # the world stays where the snapshot put it
+    search.try_move = try_move  # type: ignore[method-assign]
+    list(search.children(on_ground, None, 10, {}))
+    assert frozenset() in tried and frozenset({Action.JUMP}) in tried  # standing still is there
+
+    search.world.step(frozenset({Action.JUMP}))
+    assert not search.world.player.on_ground
+    in_the_air = Snapshot.of(search.world)
+    straight_up = Node(None, frozenset({Action.JUMP}), 11)
+    tried.clear()
+    list(search.children(in_the_air, straight_up, 11, {}))
+    assert frozenset({Action.JUMP}) in tried  # carrying on as before
+    assert frozenset() not in tried
+    assert all(choice & {Action.LEFT, Action.RIGHT} or choice == straight_up.choice
+               for choice in tried)

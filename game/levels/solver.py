@@ -11,7 +11,10 @@ What it teaches: a **beam search** over a deterministic simulation.
 * **Moves.** Every :data:`MOVE_TICKS` ticks the player picks one of a few held-input
   choices (:data:`CHOICES`: run left or right, with or without jump, stand, jump on the
   spot, and drop through a one-way floor). Holding jump into the next move keeps a jump
-  rising; letting go cuts it, so short and long jumps are both there.
+  rising; letting go cuts it, so short and long jumps are both there. In the air a move
+  steers left or right, unless it carries on as the move before did (a jump straight up
+  keeps rising straight up): that leaves two of the seven choices out of every airborne
+  state, and every shipped level takes fewer moves to solve.
 * **Two macro-actions: waits.** On a level with moving platforms, a player on the ground
   near a platform's route may also let go of the keys and stand for :data:`WAIT_TICKS`
   ticks in one move, or stand until a platform comes within :data:`COMES_PX` (worked out
@@ -88,6 +91,7 @@ CHOICES: tuple[Actions, ...] = (
     frozenset({R}), frozenset({R, J}), frozenset({L}), frozenset({L, J}),
     frozenset(), frozenset({J}), frozenset({D, J}))
 DROP = CHOICES[-1]  # only tried while standing on a one-way floor
+STEER = frozenset({L, R})  # in the air, a move steers, or carries on as the one before did
 PIT_PENALTY_TILES = 6.0  # falling with no floor below costs as much as this much distance
 STALL_MOVES = 60  # a beam that gets no closer for this many moves (plus a platform's
 #                   round trip) is stuck
@@ -301,6 +305,10 @@ class _Search:
             snapshot.restore(self.world)
             if choice is DROP and not self.world.player.on_ground_one_way:
                 continue
+            if (not choice & STEER and move_ticks == MOVE_TICKS
+                    and not self.world.player.on_ground
+                    and (node is None or node.choice != choice)):
+                continue  # in the air, steer (or carry on straight up or down as before)
             if move_ticks != MOVE_TICKS and not self.waiting_helps():
                 continue
             if move_ticks == UNTIL_A_PLATFORM_COMES:
