@@ -103,7 +103,7 @@ def test_a_path_close_to_an_enemy_left_out_is_not_clear() -> None:
     timeline.write_down(1)
     walker = world.enemy_by_number[0]
     away = [(0, walker)]
-    written = timeline.states[(1, 0)]["box"]
+    written = timeline.states[1][0]["box"]
     world.player.place(Box(written.right + 5, written.y, 12, 14))  # 5 px off
     world.step(frozenset())
     assert timeline.clear_of(away, 1)

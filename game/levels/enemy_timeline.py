@@ -52,33 +52,40 @@ class EnemyTimeline:
         self.closing_y_px_per_tick = (max(rising, tuning.max_fall_speed_px_s)
                                       + max(tuning.hopper_jump_speed_px_s,
                                             tuning.max_fall_speed_px_s) + carried) * tuning.tick_s
-        self.states: dict[tuple[int, int], dict[str, Any]] = {}  # (tick, number): attributes
+        # tick: {number: attributes} of the enemies in play at that tick
+        self.states: dict[int, dict[int, dict[str, Any]]] = {}
+        self.written = 0  # states written down, in all
 
     def write_down(self, tick: int) -> None:
         """Write down the state of each enemy in play at ``tick``, unless known already."""
-        states = self.states
-        if len(states) >= MAX_STATES:
-            return
+        row = self.states.get(tick)
+        if row is None:
+            if self.written >= MAX_STATES:
+                return
+            row = self.states[tick] = {}
+        elif len(row) == len(self.enemies):
+            return  # every enemy there is, written down already
         for number, enemy in self.enemies:
-            if (tick, number) not in states and enemy.alive():
-                states[(tick, number)] = state_of(enemy)
+            if number not in row and enemy.alive() and self.written < MAX_STATES:
+                row[number] = state_of(enemy)
+                self.written += 1
 
     def away(self, start: int, ticks: int) -> list[tuple[int, Enemy]]:
         """The enemies a move of ``ticks`` ticks from tick ``start`` may leave out: in play,
         written down at every tick of the move, and too far from the player to meet it."""
-        if not self.states:
+        rows = [self.states.get(start + tick) for tick in range(1, ticks + 1)]
+        if not all(rows):
             return []
         x, y, w, h = self.world.player.box
         apart_x = self.closing_x_px_per_tick * ticks + AWAY_PX
         apart_y = self.closing_y_px_per_tick * ticks + AWAY_PX
-        states = self.states
         away: list[tuple[int, Enemy]] = []
         for number, enemy in self.enemies:
             e_x, e_y, e_w, e_h = enemy.box
             if (enemy.alive()
                     and (e_x - (x + w) > apart_x or x - (e_x + e_w) > apart_x
                          or e_y - (y + h) > apart_y or y - (e_y + e_h) > apart_y)
-                    and all((start + tick, number) in states for tick in range(1, ticks + 1))):
+                    and all(number in row for row in rows if row is not None)):
                 away.append((number, enemy))
         return away
 
@@ -94,7 +101,7 @@ class EnemyTimeline:
             return False
         left, top, right, bottom = path.reach()
         for number, _ in away:
-            x, y, w, h = self.states[(tick, number)]["box"]
+            x, y, w, h = self.states[tick][number]["box"]
             if (x - CLOSE_PX < right and left < x + w + CLOSE_PX
                     and y - CLOSE_PX < bottom and top < y + h + CLOSE_PX):
                 return False
@@ -104,7 +111,7 @@ class EnemyTimeline:
         """Put ``away`` back in play as each was written down at ``tick``, in the order the
         world keeps its enemies."""
         for number, enemy in away:
-            put_state(enemy, self.states[(tick, number)])
+            put_state(enemy, self.states[tick][number])
         back = {number for number, _ in away}
         in_play = [enemy for number, enemy in self.enemies if number in back or enemy.alive()]
         self.world.enemies.empty()

@@ -92,9 +92,13 @@ def _recipe(thing: object, state: dict[str, Any]) -> _Recipe:
     recipe = _RECIPES.get(type(thing))
     if recipe is None:
         recipe = _RECIPES[type(thing)] = _Recipe()
-    if not recipe.known.issuperset(state) or any(
-            state.get(name) is not None for name in recipe.unsettled):
-        recipe.learn(state)
+    if recipe.known.issuperset(state):
+        for name in recipe.unsettled:
+            if state.get(name) is not None:
+                break  # a name seen only holding None holds something now
+        else:
+            return recipe
+    recipe.learn(state)
     return recipe
 
 
