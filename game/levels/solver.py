@@ -107,6 +107,7 @@ WAIT_TICKS = 30  # the wait macro: stand still this long, for a moving platform 
 UNTIL_A_PLATFORM_COMES = 0  # the other wait: stand still until a moving platform comes ...
 COMES_PX = 16.0  # ... this close to the player
 MAX_WAIT_TICKS = 36_000  # no wait is longer than this (10 minutes of play)
+SURELY_BELOW = 1 - 1e-9  # a skip ahead rounds down, past any rounding of the floats
 
 
 @dataclass(frozen=True)
@@ -267,10 +268,14 @@ class _Search:
                     or box.gap(platform.box) <= COMES_PX):
                 continue
             step = platform.speed_px_s * dt
-            for ticks in range(1, min(self.round_trip_ticks, soonest or MAX_WAIT_TICKS) + 1):
-                if box.gap(platform.box_at(platform.travelled_px + step * ticks)) <= COMES_PX:
+            ticks, last = 1, min(self.round_trip_ticks, soonest or MAX_WAIT_TICKS)
+            while ticks <= last:
+                gap = box.gap(platform.box_at(platform.travelled_px + step * ticks))
+                if gap <= COMES_PX:
                     soonest = ticks
                     break
+                # It comes at most ``step`` px nearer a tick: no tick before this one can do.
+                ticks += max(1, math.floor((gap - COMES_PX) / step * SURELY_BELOW))
         return soonest
 
     def waiting_helps(self) -> bool:
