@@ -116,7 +116,7 @@ class Effort:
 
     budget: int = DEFAULT_BUDGET  # moves the whole search may try: the bound on its work
     greedy_moves: int = 14_000  # of those, the most the best-first search may try first
-    width: int = 4  # the beam's width where it is not stuck
+    width: int = 3  # the beam's width where it is not stuck
     seconds: float | None = None  # an extra wall-clock limit (None: none, the default)
 
 
