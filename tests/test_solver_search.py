@@ -9,21 +9,25 @@ from collections.abc import Iterator
 from typing import cast
 
 from game.collision.aabb import Box
+from game.levels.reach import DEFAULT_LIMITS
 from game.levels.solver import (
     BACK_MOVES,
     COMES_PX,
+    LAST_COYOTE_TICK,
     MOVE_TICKS,
     UNTIL_A_PLATFORM_COMES,
     Effort,
     Node,
     _Search,
+    solve,
 )
 from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.snapshot import Snapshot
+from game.sim.world import World
 from tests.maps import level_from_boxes
-from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, SPAWN, WIDTH, exit_on, ferry
+from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, SPAWN, WIDTH, exit_on, ferry, gap
 
 
 def ferry_coming_back(speed_px_s: float = 40.0, spawn: Box | None = None) -> Level:
@@ -90,9 +94,9 @@ def test_a_stuck_beam_goes_back_a_few_layers_not_to_the_spawn() -> None:
 
     def recorded(snapshot: Snapshot, node: Node | None, ticks: int,
                  seen: dict[tuple[object, ...], int], layer: int = 0,
-                 ) -> Iterator[tuple[float, Snapshot, Node]]:
+                 late_jumps: bool = False) -> Iterator[tuple[float, Snapshot, Node]]:
         layers.append(layer)
-        return expand(snapshot, node, ticks, seen, layer)
+        return expand(snapshot, node, ticks, seen, layer, late_jumps)
 
     search.children = recorded  # type: ignore[method-assign]
     assert search.run() is not None
@@ -128,3 +132,19 @@ def test_in_the_air_every_move_steers_unless_it_carries_on_as_the_one_before() -
     assert frozenset() not in tried
     assert all(choice & {Action.LEFT, Action.RIGHT} or choice == straight_up.choice
                for choice in tried)
+
+
+def test_a_gap_past_a_running_jump_is_crossed_by_a_jump_on_the_last_coyote_tick() -> None:
+    wide = gap(DEFAULT_LIMITS.coyote_gap_px - 1)  # wider than a running jump crosses
+    assert DEFAULT_LIMITS.coyote_gap_px - 1 > DEFAULT_LIMITS.gap_px
+    solution = solve(wide, Effort(budget=4_000))
+    assert solution.found
+    world = World(wide)
+    for tick, held in enumerate(solution.held):
+        if Action.JUMP in held and not world.player.on_ground:
+            # the jump that crossed was pressed in the air: on the last coyote tick
+            assert world.player.coyote_ticks_left == LAST_COYOTE_TICK, tick
+            break
+        world.step(held)
+    else:
+        raise AssertionError("the route never jumps off the edge")

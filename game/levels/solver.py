@@ -15,6 +15,11 @@ What it teaches: a **beam search** over a deterministic simulation.
   steers left or right, unless it carries on as the move before did (a jump straight up
   keeps rising straight up): that leaves two of the seven choices out of every airborne
   state, and every shipped level takes fewer moves to solve.
+* **A macro-action for the widest jumps.** When a run goes off an edge, the best-first
+  search (below) also tries the same run with jump pressed on the last tick coyote time
+  allows, which a move every 6 ticks would rarely hit: that is how the widest gaps are
+  crossed. The beams keep to the plain moves: in them, the late jumps made The Summit take
+  twice the moves.
 * **Two macro-actions: waits.** On a level with moving platforms, a player on the ground
   near a platform's route may also let go of the keys and stand for :data:`WAIT_TICKS`
   ticks in one move, or stand until a platform comes within :data:`COMES_PX` (worked out
@@ -92,6 +97,8 @@ CHOICES: tuple[Actions, ...] = (
     frozenset(), frozenset({J}), frozenset({D, J}))
 DROP = CHOICES[-1]  # only tried while standing on a one-way floor
 STEER = frozenset({L, R})  # in the air, a move steers, or carries on as the one before did
+RUNS = (frozenset({R}), frozenset({L}))  # the moves that may run off an edge
+LAST_COYOTE_TICK = 2  # coyote ticks left before the tick on which a jump is the last one
 PIT_PENALTY_TILES = 6.0  # falling with no floor below costs as much as this much distance
 STALL_MOVES = 60  # a beam that gets no closer for this many moves (plus a platform's
 #                   round trip) is stuck
@@ -300,10 +307,12 @@ class _Search:
         return self.beams()
 
     def children(self, snapshot: Snapshot, node: Node | None, ticks: int,
-                 seen: dict[StateKey, int], layer: int = 0,
+                 seen: dict[StateKey, int], layer: int = 0, late_jumps: bool = False,
                  ) -> Iterator[tuple[float, Snapshot, Node]]:
-        """Every new state one move from ``snapshot``; stops early at an Exit (its Node
-        comes with an infinitely good score of minus infinity)."""
+        """Every new state one move from ``snapshot``, and with ``late_jumps``, the jump on
+        the last coyote tick off each edge a run went over; stops early at an Exit (its
+        Node comes with an infinitely good score of minus infinity)."""
+        ledges: list[Actions] = []  # runs that went off an edge: try them with a late jump
         for choice, move_ticks in self.moves:
             if self.out_of_time():
                 return
@@ -324,26 +333,81 @@ class _Search:
                 self.waits[(box.x, box.y, ticks + coming)] = layer
                 move_ticks = coming
             outcome = self.try_move(snapshot, ticks, choice, move_ticks)
-            lost = node.lives_lost if node is not None else 0
-            if outcome < 0:
-                lost += 1
-                if lost >= self.lives:
-                    continue
-            child = Node(node, choice, ticks + (outcome if outcome > 0 else move_ticks), lost)
-            if outcome > 0:
-                yield -math.inf, snapshot, child
+            if late_jumps and outcome == 0 and choice in RUNS and self.ran_off_an_edge():
+                ledges.append(choice)
+            child = self.child(snapshot, node, choice, ticks, move_ticks, outcome, seen, layer)
+            if child is not None:
+                yield child
+                if child[0] == -math.inf:
+                    return
+        for run in ledges:
+            if self.out_of_time():
                 return
-            key = (*self.key(choice), lost)
-            if key in seen:
+            jump = self.jump_on_the_last_coyote_tick(snapshot, node, ticks, run)
+            if jump is None:
                 continue
-            seen[key] = layer
-            score = self.score() + lost * DEATH_PENALTY_TILES
-            if score == UNREACHABLE:
-                continue  # no way on to an Exit from here, by the proof of reachable
-            self.states += 1
-            if score < self.best[0]:
-                self.best = (score, self.world.player.box, child)
-            yield score, Snapshot.of(self.world), child
+            ran, outcome = jump
+            child = self.child(snapshot, ran, run | {J}, ran.ticks, MOVE_TICKS, outcome, seen,
+                               layer)
+            if child is not None:
+                yield child
+                if child[0] == -math.inf:
+                    return
+
+    def child(self, snapshot: Snapshot, parent: Node | None, choice: Actions, start: int,
+              move_ticks: int, outcome: int, seen: dict[StateKey, int], layer: int,
+              ) -> tuple[float, Snapshot, Node] | None:
+        """The new state the world is in after a move from ``parent`` (``outcome``: as
+        :meth:`try_move` gives it), scored, or None if it was seen before or leads nowhere."""
+        lost = parent.lives_lost if parent is not None else 0
+        if outcome < 0:
+            lost += 1
+            if lost >= self.lives:
+                return None
+        child = Node(parent, choice, start + (outcome if outcome > 0 else move_ticks), lost)
+        if outcome > 0:
+            return -math.inf, snapshot, child
+        key = (*self.key(choice), lost)
+        if key in seen:
+            return None
+        seen[key] = layer
+        score = self.score() + lost * DEATH_PENALTY_TILES
+        if score == UNREACHABLE:
+            return None  # no way on to an Exit from here, by the proof of reachable
+        self.states += 1
+        if score < self.best[0]:
+            self.best = (score, self.world.player.box, child)
+        return score, Snapshot.of(self.world), child
+
+    def ran_off_an_edge(self) -> bool:
+        """After a run: in the air without a jump, with coyote time left beyond the next
+        tick (so a jump at the start of the next move would not be the latest one)."""
+        player = self.world.player
+        return (not player.on_ground and not player.rising_from_jump and player.vy >= 0
+                and player.coyote_ticks_left > LAST_COYOTE_TICK)
+
+    def jump_on_the_last_coyote_tick(self, snapshot: Snapshot, parent: Node | None,
+                                     start: int, run: Actions) -> tuple[Node, int] | None:
+        """The macro-action of the widest jumps: from ``snapshot``, hold ``run`` off the edge
+        ahead, then press jump on the last tick coyote time allows and hold it one move.
+        Returns the run's Node and the jump's outcome (as :meth:`try_move` gives it), or
+        None if the run ended otherwise (it reached an Exit or lost a life: the run alone
+        was tried already)."""
+        snapshot.restore(self.world)
+        player = self.world.player
+        for tick in range(1, 2 * MOVE_TICKS + 1):
+            events = self.world.step(run)
+            self.timeline.write_down(start + tick)
+            if any(event.kind in (EventKind.EXIT, EventKind.HURT) for event in events):
+                return None
+            if not player.on_ground and player.coyote_ticks_left == LAST_COYOTE_TICK:
+                break  # the next tick is the last a jump still counts as from the ground
+        else:
+            return None
+        self.moves_tried += math.ceil(tick / MOVE_TICKS)  # the jump's move counts itself
+        ran = Node(parent, run, start + tick, parent.lives_lost if parent is not None else 0)
+        after_the_run = Snapshot.of(self.world)
+        return ran, self.try_move(after_the_run, ran.ticks, run | {J})
 
     def best_first(self, max_moves: int) -> Node | None:
         """Always carry on from the state closest to an Exit, counting time a little
@@ -356,7 +420,8 @@ class _Search:
         while queue and self.moves_tried < max_moves:
             _, _, snapshot, node = heapq.heappop(queue)
             ticks = node.ticks if node is not None else 0
-            for score, child_state, child in self.children(snapshot, node, ticks, seen):
+            for score, child_state, child in self.children(snapshot, node, ticks, seen,
+                                                           late_jumps=True):
                 if score == -math.inf:
                     return child
                 order += 1
