@@ -9,8 +9,8 @@ every branch of the search in which it is still alive. The first move to step th
 writes down the state of each enemy in play (:meth:`EnemyTimeline.write_down`); a later move
 from the same tick leaves out of the world the enemies far from the player
 (:meth:`EnemyTimeline.away`), steps without them, and puts them back as they were written
-down (:meth:`EnemyTimeline.put_back`). On The Summit, whose seven enemies cost more than half
-of a tick, a move costs less than half as much.
+down (:meth:`EnemyTimeline.put_back`). Most enemies are far from the player most of the time,
+so most of their steps are saved, while the rest of the tick is not.
 
 It stays exact. After every tick of a move made without some enemies, the player's path that
 tick is compared with the place written down for each of them (:meth:`EnemyTimeline.clear_of`);
