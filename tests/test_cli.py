@@ -6,8 +6,6 @@ the rest call its ``main`` in this process, where an exception escaping it fails
 
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import os
 import subprocess
@@ -17,6 +15,7 @@ from pathlib import Path
 import pytest
 
 from game.app import cli
+from tests.in_process import call_main
 from tests.maps import write_tmx
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -35,14 +34,9 @@ def game(*args: str | Path, cwd: Path = ROOT) -> subprocess.CompletedProcess[str
 
 def in_process(*args: str | Path) -> tuple[int, str]:
     """``python -m game ARGS`` called in this process from the repository's root: its exit
-    status (argparse's usage errors included) and what it said on stderr."""
-    with pytest.MonkeyPatch.context() as patch, contextlib.redirect_stderr(io.StringIO()) as err:
-        patch.chdir(ROOT)
-        try:
-            status = cli.main([*map(str, args)])
-        except SystemExit as leaving:
-            status = int(leaving.code or 0)
-    return status, err.getvalue()
+    status and what it said on stderr."""
+    ran = call_main(cli.main, args, cwd=ROOT)
+    return ran.returncode, ran.stderr
 
 
 def report_of(tmp_path: Path, *args: str | Path) -> dict[str, object]:
