@@ -5,7 +5,9 @@ depends on being a separate process.
 What the command prints goes through UTF-8 text streams, as it would through a pipe, so a
 line it could not encode fails here as it would fail there. An exception escaping ``main``
 fails the test: as a program, that would have been a traceback. A usage error (argparse's
-``SystemExit``) becomes the exit status the program would have ended with.
+``SystemExit``) becomes the exit status the program would have ended with. Where a command
+could wait for ever (a pipe named as a map), ``hang_s`` stops it the way a timeout stops a
+program: with an error no ``except Exception`` in the command can turn into a sentence.
 
 Signals, the interpreter's start-up, an installed wheel, the environment read when pygame
 loads and the exit status of the real entry point still need the program itself; every
@@ -16,11 +18,16 @@ from __future__ import annotations
 
 import contextlib
 import io
-from collections.abc import Callable, Sequence
+import signal
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+
+
+class Hung(BaseException):
+    """A command still running after its ``hang_s``: it waits for something that never comes."""
 
 
 @dataclass(frozen=True)
@@ -33,11 +40,11 @@ class Ran:
 
 
 def call_main(main: Callable[[list[str]], int], args: Sequence[str | Path],
-              cwd: Path | None = None) -> Ran:
+              cwd: Path | None = None, hang_s: float | None = None) -> Ran:
     """``main(args)`` run in ``cwd`` (if given): its exit status and what it printed."""
     out, err = _pipe(), _pipe()
     with pytest.MonkeyPatch.context() as patch, contextlib.redirect_stdout(out), \
-            contextlib.redirect_stderr(err):
+            contextlib.redirect_stderr(err), _stopped_after(hang_s):
         if cwd is not None:
             patch.chdir(cwd)
         try:
@@ -46,6 +53,24 @@ def call_main(main: Callable[[list[str]], int], args: Sequence[str | Path],
             code = leaving.code
             status = 0 if code is None else code if isinstance(code, int) else 1
     return Ran(status, _read(out), _read(err))
+
+
+@contextlib.contextmanager
+def _stopped_after(seconds: float | None) -> Iterator[None]:
+    if seconds is None:
+        yield
+        return
+
+    def expire(_signal: int, _frame: object) -> None:
+        raise Hung(f"still running after {seconds} s: it hangs")
+
+    previous = signal.signal(signal.SIGALRM, expire)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
 
 
 def _pipe() -> io.TextIOWrapper:
