@@ -27,7 +27,7 @@ from game.app.watch import FileWatcher, level_files
 from game.levels import LevelError, budget, check_level, errors, layers, load_level
 from game.levels.__main__ import main as levels_main
 from game.levels.images import header_size
-from tests.hang_guard import hang_guard
+from tests.hang_guard import HANG_S
 from tests.in_process import Ran, call_main
 from tests.test_loader import OBJECTS, TILESET, write_map
 
@@ -69,8 +69,8 @@ def checker(*args: str | Path) -> Ran:
 
 
 def game(*args: str | Path) -> Ran:
-    """``python -m game ARGS``, called in this process."""
-    return call_main(cli.main, args)
+    """``python -m game ARGS``, called in this process (a FIFO must not be waited on)."""
+    return call_main(cli.main, args, hang_s=HANG_S)
 
 
 def opened_outside(trace: Path, pack: Path, secret: Path) -> list[str]:
@@ -201,8 +201,7 @@ def test_watch_lists_the_tileset_and_images_the_loader_opened(tmp_path: Path) ->
 def test_a_fifo_named_as_a_tileset_is_refused_at_once(tmp_path: Path) -> None:
     os.mkfifo(tmp_path / "t.tsx")
     level = write_map(tmp_path, tileset='<tileset firstgid="1" source="t.tsx"/>')
-    with hang_guard():  # a FIFO nobody writes to would block a read for ever
-        played = game("--headless", "--ticks", "5", "--level", level)
+    played = game("--headless", "--ticks", "5", "--level", level)
     assert played.returncode == 1
     assert "not a regular file" in one_sentence(played.stderr)
 
