@@ -8,10 +8,14 @@ fails the test: as a program, that would have been a traceback. A usage error (a
 ``SystemExit``) becomes the exit status the program would have ended with. Where a command
 could wait for ever (a pipe named as a map), ``hang_s`` stops it the way a timeout stops a
 program: with an error no ``except Exception`` in the command can turn into a sentence.
+Several maps are checked with ``--jobs 1``: a worker forked from the test run, whose other
+threads (pygame starts some) may hold a lock at that moment, can wait on it for ever;
+``tests/test_side_by_side.py`` shows that one job prints what several print.
 
 Signals, the interpreter's start-up, an installed wheel, the environment read when pygame
 loads and the exit status of the real entry point still need the program itself; every
-command keeps tests that start it (``tests/test_cli.py``, ``tests/test_levels.py``).
+command keeps tests that start it (``tests/test_cli.py``, ``tests/test_levels.py``,
+``tests/test_lab.py``).
 """
 
 from __future__ import annotations
