@@ -48,7 +48,8 @@ def test_the_checker_passes_every_shipped_level() -> None:
 
 def test_the_checker_gives_the_reach_of_a_map_that_sets_its_own_physics() -> None:
     fast_fall = LEVELS_DIR / "showcase" / "fast-fall.tmx"    # gravity 512 times the default
-    result = call_main(levels_main, ["check", "--no-solve", fast_fall, FIRST_LEVEL])
+    result = call_main(levels_main, ["check", "--no-solve", "--jobs", "1", fast_fall,
+                                     FIRST_LEVEL])
     own_tuning = Tuning().with_map_properties(load_level(fast_fall).properties)
     own = measure_reach(own_tuning)
     assert own.height_px < measure_reach(Tuning()).height_px / 100
