@@ -390,7 +390,8 @@ def test_physics_properties_are_checked(tmp_path: Path, value: str, ok: bool) ->
 def checker(*paths: Path) -> Ran:
     """The checker on ``paths``, without its search for a route (tests/test_solver.py),
     called in this process (tests/test_levels.py starts the program itself)."""
-    return call_main(levels_main, ["check", "--no-solve", *paths], hang_s=HANG_S)
+    return call_main(levels_main, ["check", "--no-solve", "--jobs", "1", *paths],
+                     hang_s=HANG_S)
 
 
 def test_the_checker_answers_every_kind_of_bad_path_in_one_sentence(tmp_path: Path) -> None:
