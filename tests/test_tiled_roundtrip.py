@@ -90,7 +90,7 @@ def final_state(level: Path) -> dict[str, object]:
 def test_levels_resaved_by_tiled_pass_the_checker(variant: str,
                                                   resaved: dict[str, Path]) -> None:
     maps = sorted(resaved[variant].glob("*.tmx"))
-    result = call_main(levels_main, ["check", "--no-solve", *maps])
+    result = call_main(levels_main, ["check", "--no-solve", "--jobs", "1", *maps])
     assert result.returncode == 0, result.stdout
     assert result.stdout.startswith(f"checked {len(maps)} map(s): all playable;"), result.stdout
     assert len(result.stdout.splitlines()) == 1, result.stdout
