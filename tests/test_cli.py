@@ -1,4 +1,8 @@
-"""``python -m game`` as scripts use it: options, exit codes, the report, replay."""
+"""``python -m game`` as scripts use it: options, exit codes, the report, replay.
+
+A few tests start the real command as a program (its exit status and its stderr, end to end);
+the rest call its ``main`` in this process, where an exception escaping it fails the test.
+"""
 
 from __future__ import annotations
 
@@ -10,6 +14,8 @@ from pathlib import Path
 
 import pytest
 
+from game.app import cli
+from tests.in_process import call_main
 from tests.maps import write_tmx
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -26,16 +32,27 @@ def game(*args: str | Path, cwd: Path = ROOT) -> subprocess.CompletedProcess[str
                           capture_output=True, text=True, timeout=120, check=False)
 
 
+def in_process(*args: str | Path) -> tuple[int, str]:
+    """``python -m game ARGS`` called in this process from the repository's root: its exit
+    status and what it said on stderr."""
+    ran = call_main(cli.main, args, cwd=ROOT)
+    return ran.returncode, ran.stderr
+
+
 def report_of(tmp_path: Path, *args: str | Path) -> dict[str, object]:
     out = tmp_path / "report.json"
-    result = game("--headless", "--report", out, *args)
-    assert result.returncode == 0, result.stderr
+    status, err = in_process("--headless", "--report", out, *args)
+    assert status == 0, err
     data: dict[str, object] = json.loads(out.read_text())
     return data
 
 
 def test_the_report_has_every_key_of_the_contract(tmp_path: Path) -> None:
-    report = report_of(tmp_path, "--ticks", "30")
+    """The program itself, end to end: exit status 0 and the report it wrote."""
+    out = tmp_path / "report.json"
+    result = game("--headless", "--report", out, "--ticks", "30")
+    assert result.returncode == 0, result.stderr
+    report = json.loads(out.read_text())
     assert set(report) == REPORT_KEYS
     player = report["player"]
     timing = report["timing"]
@@ -105,19 +122,20 @@ def test_tiled_1_9_class_attributes_are_read_like_type(tmp_path: Path) -> None:
 
 def test_debug_screenshot_writes_a_png(tmp_path: Path) -> None:
     shot = tmp_path / "shot.png"
-    result = game("--headless", "--ticks", "10", "--debug", "--screenshot", shot)
-    assert result.returncode == 0, result.stderr
+    status, err = in_process("--headless", "--ticks", "10", "--debug", "--screenshot", shot)
+    assert status == 0, err
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
 def test_a_missing_level_exits_1_with_one_sentence(tmp_path: Path) -> None:
-    result = game("--headless", "--ticks", "5", "--level", tmp_path / "nope.tmx")
-    assert result.returncode == 1
-    assert "Traceback" not in result.stderr
-    assert result.stderr.strip().count("\n") == 0 and "nope.tmx" in result.stderr
+    status, err = in_process("--headless", "--ticks", "5", "--level", tmp_path / "nope.tmx")
+    assert status == 1
+    assert "Traceback" not in err
+    assert err.strip().count("\n") == 0 and "nope.tmx" in err
 
 
 def test_a_broken_level_exits_1_without_a_traceback(tmp_path: Path) -> None:
+    """The program itself, end to end: exit status 1 and nothing but its sentence."""
     bad = tmp_path / "bad.tmx"
     bad.write_text("<map><layer>")
     result = game("--headless", "--ticks", "5", "--level", bad)
@@ -126,6 +144,7 @@ def test_a_broken_level_exits_1_without_a_traceback(tmp_path: Path) -> None:
 
 
 def test_a_bad_input_line_exits_2_naming_the_line(tmp_path: Path) -> None:
+    """The program itself, end to end: exit status 2."""
     inputs = tmp_path / "in.txt"
     inputs.write_text("# fine\n0 +right\n10 +fly\n")
     result = game("--headless", "--ticks", "5", "--inputs", inputs)
@@ -136,12 +155,12 @@ def test_a_bad_input_line_exits_2_naming_the_line(tmp_path: Path) -> None:
 def test_decreasing_ticks_in_an_input_script_are_refused(tmp_path: Path) -> None:
     inputs = tmp_path / "in.txt"
     inputs.write_text("10 +right\n5 -right\n")
-    result = game("--headless", "--ticks", "5", "--inputs", inputs)
-    assert result.returncode == 2 and "line 2" in result.stderr
+    status, err = in_process("--headless", "--ticks", "5", "--inputs", inputs)
+    assert status == 2 and "line 2" in err
 
 
 @pytest.mark.parametrize("args", [["--ticks", "-3"], ["--ticks", "many"], ["--frobnicate"]])
 def test_bad_usage_exits_2(args: list[str]) -> None:
-    result = game("--headless", *args)
-    assert result.returncode == 2
-    assert "Traceback" not in result.stderr
+    status, err = in_process("--headless", *args)
+    assert status == 2
+    assert "Traceback" not in err and "usage:" in err

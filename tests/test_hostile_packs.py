@@ -4,7 +4,9 @@ one sentence, its exit status, no traceback, and nothing opened outside the pack
 The packs: a project whose ``assets`` or ``levels`` is a link out, a map that is itself a
 link, ``--watch`` led to files by elements the loader never reads, a GIF whose frame is
 larger than its screen after a stray byte. Where ``strace`` is installed, the commands are
-run under it and every file they open is compared with the pack's folder.
+run under it and every file they open is compared with the pack's folder; the other commands
+are called in this process (:mod:`tests.in_process`), but for Ctrl-C, an undecodable
+argument and a window, which need the program itself.
 """
 
 from __future__ import annotations
@@ -20,9 +22,13 @@ from pathlib import Path
 import pygame
 import pytest
 
+from game.app import cli
 from game.app.watch import FileWatcher, level_files
 from game.levels import LevelError, budget, check_level, errors, layers, load_level
+from game.levels.__main__ import main as levels_main
 from game.levels.images import header_size
+from tests.hang_guard import HANG_S
+from tests.in_process import Ran, call_main
 from tests.test_loader import OBJECTS, TILESET, write_map
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -55,6 +61,16 @@ def run(args: list[str], cwd: Path, traced: Path | None = None
         command = [STRACE, "-f", "-qq", "-e", "trace=open,openat", "-o", str(traced), *command]
     return subprocess.run(command, cwd=cwd, env=ENV, capture_output=True, text=True,
                           timeout=120, check=False)
+
+
+def checker(*args: str | Path) -> Ran:
+    """``python -m game.levels check ARGS``, called in this process."""
+    return call_main(levels_main, ["check", *args])
+
+
+def game(*args: str | Path) -> Ran:
+    """``python -m game ARGS``, called in this process (a FIFO must not be waited on)."""
+    return call_main(cli.main, args, hang_s=HANG_S)
 
 
 def opened_outside(trace: Path, pack: Path, secret: Path) -> list[str]:
@@ -133,10 +149,9 @@ def test_a_map_that_is_a_link_to_a_map_elsewhere_is_refused_unread(tmp_path: Pat
     assert "link that leads outside" in done.stdout
     if STRACE:
         assert opened_outside(tmp_path / "trace", pack, elsewhere) == []
-    game = run(["-m", "game", "--headless", "--ticks", "5", "--level",
-                str(pack / "level.tmx")], tmp_path)
-    assert game.returncode == 1
-    assert "link that leads outside" in one_sentence(game.stderr)
+    played = game("--headless", "--ticks", "5", "--level", pack / "level.tmx")
+    assert played.returncode == 1
+    assert "link that leads outside" in one_sentence(played.stderr)
 
 
 def test_a_link_to_a_map_inside_the_same_folder_is_still_read(tmp_path: Path) -> None:
@@ -186,9 +201,9 @@ def test_watch_lists_the_tileset_and_images_the_loader_opened(tmp_path: Path) ->
 def test_a_fifo_named_as_a_tileset_is_refused_at_once(tmp_path: Path) -> None:
     os.mkfifo(tmp_path / "t.tsx")
     level = write_map(tmp_path, tileset='<tileset firstgid="1" source="t.tsx"/>')
-    game = run(["-m", "game", "--headless", "--ticks", "5", "--level", str(level)], tmp_path)
-    assert game.returncode == 1
-    assert "not a regular file" in one_sentence(game.stderr)
+    played = game("--headless", "--ticks", "5", "--level", level)
+    assert played.returncode == 1
+    assert "not a regular file" in one_sentence(played.stderr)
 
 
 # -- the decoder's answer is the one checked --------------------------------------------------
@@ -199,7 +214,7 @@ def test_a_47_byte_gif_with_a_huge_frame_after_a_stray_byte_is_refused(tmp_path:
     (tmp_path / "t.gif").write_bytes(HOSTILE_GIF)
     level = write_map(tmp_path, tileset=TILESET.format(
         image='<image source="t.gif" width="16" height="16"/>'))
-    done = run(["-m", "game.levels", "check", str(level), "--no-solve"], tmp_path)
+    done = checker(level, "--no-solve")
     assert done.returncode == 1 and "Traceback" not in done.stderr
     [line] = [line for line in done.stdout.splitlines() if "t.gif" in line]
     assert "65535x65535 GIF" in line and "16384 pixels a side" in line
@@ -326,7 +341,7 @@ def test_offsets_that_overflow_only_when_added_are_refused(tmp_path: Path) -> No
             '</layer></group>')
     level = write_map(tmp_path, body)
     assert "its offset, added to its groups'" in refusal(level)
-    done = run(["-m", "game.levels", "check", str(level), "--no-solve"], tmp_path)
+    done = checker(level, "--no-solve")
     assert done.returncode == 1 and "Traceback" not in done.stderr
     assert "all playable" not in done.stdout
 
@@ -339,9 +354,9 @@ def test_a_circle_of_levels_won_at_the_spawn_stops_with_a_sentence(tmp_path: Pat
                 '<map version="1.8" ', '<map version="1.8" ').replace(
                 "</map>", '<properties><property name="next_level" type="file" '
                 f'value="{other}"/></properties></map>'), encoding="utf-8")
-    game = run(["-m", "game", "--headless", "--level", str(tmp_path / "a.tmx")], tmp_path)
-    assert game.returncode == 1
-    message = one_sentence(game.stderr)
+    played = game("--headless", "--level", tmp_path / "a.tmx")
+    assert played.returncode == 1
+    message = one_sentence(played.stderr)
     assert f"{budget.MAX_LEVELS_PER_RUN:,} levels were completed" in message
 
 
@@ -355,7 +370,7 @@ def test_a_name_cannot_forge_a_line_or_send_controls_to_the_terminal(tmp_path: P
         '<object id="2" type="Exit"', f'<object id="3" name="{escape_xml(FORGED)}" '
         'type="Chest" x="1" y="1"/><object id="2" type="Exit"')
     level = write_map(tmp_path, layer_named(FORGED), objects=objects)
-    done = run(["-m", "game.levels", "check", str(level), "--no-solve"], tmp_path)
+    done = checker(level, "--no-solve")
     assert "Traceback" not in done.stderr
     lines = done.stdout.splitlines()
     assert sum(line.startswith("checked 1 map(s)") for line in lines) == 1
@@ -430,8 +445,6 @@ def outputs(folder: Path, name: str) -> list[str]:
 @pytest.mark.parametrize("name", ["odd\udcff\udcfename", "x" * 240])
 def test_output_names_of_any_bytes_and_any_length_are_written_under_that_name(
         tmp_path: Path, name: str) -> None:
-    from game.app import cli
-
     level = str(ROOT / "levels/01-first-steps.tmx")
     assert cli.main(["--headless", "--ticks", "5", "--level", level,
                      *outputs(tmp_path, name)]) == 0
@@ -449,8 +462,6 @@ def test_output_names_of_any_bytes_and_any_length_are_written_under_that_name(
 def test_a_failed_picture_write_leaves_nothing_and_names_the_file(
         tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
         capsys: pytest.CaptureFixture[str]) -> None:
-    from game.app import cli
-
     def full_disk(surface: object, stream: object, hint: str = "") -> None:
         assert hasattr(stream, "write")
         stream.write(b"\x89PNG\r\n\x1a\n" + bytes(8))
@@ -501,8 +512,6 @@ def test_the_designers_guide_gives_every_limit_of_the_budget() -> None:
 
 def test_a_solver_script_that_cannot_be_written_names_the_file_and_leaves_nothing(
         tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    from game.levels.__main__ import main as levels_main
-
     out = tmp_path / "missing" / ("é" * 120 + "\udcff.txt")
     status = levels_main(["solve", str(ROOT / "levels/01-first-steps.tmx"), "--out", str(out)])
     err = capsys.readouterr().err

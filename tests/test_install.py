@@ -1,9 +1,10 @@
 """The game installs like any Python program and plays from any folder.
 
 The wheel is built from a copy of the repository, installed into a fresh virtual
-environment, and run as ``tile-hopper`` from a folder that holds nothing of the game: the
-campaign, the tileset, the art and the sounds must all come from inside the installed
-package. Building and installing take a minute, so the test carries the ``install`` mark
+environment (by this environment's pip, so the new one needs no pip of its own), and run as
+``tile-hopper`` from a folder that holds nothing of the game: the campaign, the tileset, the
+art and the sounds must all come from inside the installed package. Building and installing
+take a minute, so the test carries the ``install`` mark
 (``pytest -m "not install"`` skips it); CI runs it.
 """
 
@@ -69,10 +70,11 @@ def test_a_wheel_installed_in_a_fresh_environment_plays_level_one_from_any_folde
         tmp_path)
     [wheel] = wheels.glob("tile_hopper-*.whl")
 
-    venv = tmp_path / "venv"
-    run([sys.executable, "-m", "venv", venv], tmp_path)
+    venv = tmp_path / "venv"  # fresh and empty: this environment's pip installs into it
+    run([sys.executable, "-m", "venv", "--without-pip", venv], tmp_path)
     bin_dir = venv / ("Scripts" if os.name == "nt" else "bin")
-    run([bin_dir / "python", "-m", "pip", "install", "-q", wheel], tmp_path)
+    run([sys.executable, "-m", "pip", "--python", bin_dir / "python", "install", "-q",
+         "--no-compile", wheel], tmp_path)  # byte-compiling the files proves nothing here
 
     elsewhere = tmp_path / "elsewhere"  # nothing of the game here, nor above it
     elsewhere.mkdir()

@@ -42,6 +42,7 @@ from game.lab.sort_and_sweep import SortAndSweepScene
 from game.lab.testbed import Lab
 from game.lab.tunnelling import LANES, Tunnelling, wall_of
 from game.lab.xray import XRay
+from tests.in_process import call_main
 
 ROOT = Path(__file__).resolve().parent.parent
 NAMES = [scene.name for scene in SCENES]
@@ -127,10 +128,8 @@ def test_list_long_names_at_least_twelve_scenes_each_first_on_its_line_with_grou
 
 
 def test_an_unknown_scene_is_bad_usage_with_the_list_on_stderr() -> None:
-    env = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy"}
-    result = subprocess.run([sys.executable, "-m", "game.lab", "--scene", "no-such-scene",
-                             "--screenshot", "unused.png"], cwd=ROOT, env=env,
-                            capture_output=True, text=True, timeout=60, check=False)
+    result = call_main(main, ["--scene", "no-such-scene", "--screenshot", "unused.png"],
+                       cwd=ROOT)
     assert result.returncode == 2
     assert "Traceback" not in result.stderr
     assert "no-such-scene" in result.stderr

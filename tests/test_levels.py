@@ -11,12 +11,14 @@ import pytest
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
+from game.levels.__main__ import main as levels_main
 from game.levels.loader import check_level
 from game.levels.reach import DEFAULT_LIMITS, measure_limits, measure_reach
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, InputScript
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
+from tests.in_process import call_main
 from tests.maps import MEASURED, write_tmx
 
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
@@ -33,7 +35,8 @@ def test_the_campaign_has_at_least_two_levels_chained_from_the_first() -> None:
 
 
 def test_the_checker_passes_every_shipped_level() -> None:
-    """Without the search for a route: tests/test_solver.py solves every shipped level."""
+    """Without the search for a route: tests/test_solver.py solves every shipped level.
+    The program itself, end to end; the checker's other tests call it in this process."""
     result = subprocess.run([sys.executable, "-m", "game.levels", "check", "--no-solve",
                              *map(str, SHIPPED)],
                             capture_output=True, text=True, timeout=60, check=False)
@@ -45,9 +48,8 @@ def test_the_checker_passes_every_shipped_level() -> None:
 
 def test_the_checker_gives_the_reach_of_a_map_that_sets_its_own_physics() -> None:
     fast_fall = LEVELS_DIR / "showcase" / "fast-fall.tmx"    # gravity 512 times the default
-    result = subprocess.run([sys.executable, "-m", "game.levels", "check", "--no-solve",
-                             str(fast_fall), str(FIRST_LEVEL)],
-                            capture_output=True, text=True, timeout=60, check=False)
+    result = call_main(levels_main, ["check", "--no-solve", "--jobs", "1", fast_fall,
+                                     FIRST_LEVEL])
     own_tuning = Tuning().with_map_properties(load_level(fast_fall).properties)
     own = measure_reach(own_tuning)
     assert own.height_px < measure_reach(Tuning()).height_px / 100
@@ -60,8 +62,7 @@ def test_the_checker_gives_the_reach_of_a_map_that_sets_its_own_physics() -> Non
 
 def test_the_checker_names_the_file_and_the_fix_for_a_bad_map(tmp_path: Path) -> None:
     level = write_tmx(tmp_path, ["      ", "  C   ", "######"])      # no Player
-    result = subprocess.run([sys.executable, "-m", "game.levels", "check", str(level)],
-                            capture_output=True, text=True, timeout=60, check=False)
+    result = call_main(levels_main, ["check", level])
     assert result.returncode == 1
     assert result.stdout.startswith(f"{level}: ") and "Player" in result.stdout
     assert " — " in result.stdout and "Traceback" not in result.stdout + result.stderr

@@ -9,19 +9,20 @@ from __future__ import annotations
 import base64
 import os
 import shutil
-import subprocess
-import sys
 import zlib
 from pathlib import Path
 
 import pytest
 
+from game.app import cli
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind
 from game.levels import LEVELS_DIR, LevelError, check_level, load_level
+from game.levels.__main__ import main as levels_main
 from game.sim.level import Level
 from game.sim.tuning import Tuning
-from tests.hang_guard import hang_guard
+from tests.hang_guard import HANG_S, hang_guard
+from tests.in_process import Ran, call_main
 
 TILESET = """<tileset firstgid="1" name="t" tilewidth="16" tileheight="16" tilecount="4"
  columns="4">{image}
@@ -386,11 +387,11 @@ def test_physics_properties_are_checked(tmp_path: Path, value: str, ok: bool) ->
 
 # --- the checker's command line -----------------------------------------------------------
 
-def checker(*paths: Path) -> subprocess.CompletedProcess[str]:
-    """The checker on ``paths``, without its search for a route (tests/test_solver.py)."""
-    return subprocess.run([sys.executable, "-m", "game.levels", "check", "--no-solve",
-                           *map(str, paths)],
-                          capture_output=True, text=True, timeout=60, check=False)
+def checker(*paths: Path) -> Ran:
+    """The checker on ``paths``, without its search for a route (tests/test_solver.py),
+    called in this process (tests/test_levels.py starts the program itself)."""
+    return call_main(levels_main, ["check", "--no-solve", "--jobs", "1", *paths],
+                     hang_s=HANG_S)
 
 
 def test_the_checker_answers_every_kind_of_bad_path_in_one_sentence(tmp_path: Path) -> None:
@@ -455,10 +456,7 @@ def test_a_headless_run_needs_no_tile_images_but_the_checker_does(tmp_path: Path
     shutil.copytree(LEVELS_DIR.parent / "assets", tmp_path / "assets")
     (tmp_path / "assets" / "tiles.png").unlink()
     level = tmp_path / "levels" / "01-first-steps.tmx"
-    env = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy"}
-    run = subprocess.run([sys.executable, "-m", "game", "--headless", "--ticks", "5",
-                          "--level", str(level)], env=env, capture_output=True, text=True,
-                         timeout=60, check=False)
+    run = call_main(cli.main, ["--headless", "--ticks", "5", "--level", level])
     assert run.returncode == 0, run.stderr
     result = checker(level)
     assert result.returncode == 1 and "tiles.png is missing" in result.stdout

@@ -17,6 +17,7 @@ import pytest
 
 from game.levels import LEVELS_DIR, load_level
 from game.levels.__main__ import check, command_name
+from game.levels.__main__ import main as levels_main
 from game.levels.checking import Options, check_map
 from game.levels.reach import DEFAULT_LIMITS, Limits, measure_limits, measure_reach
 from game.levels.route_picture import PLATFORM, draw_route
@@ -34,6 +35,7 @@ from game.sim.inputs import Action, InputScript
 from game.sim.snapshot import Snapshot
 from game.sim.tuning import Tuning
 from game.sim.world import World
+from tests.in_process import call_main
 
 ROOT = Path(__file__).resolve().parent.parent
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
@@ -173,8 +175,7 @@ def walled_in_copy(folder: Path) -> Path:
 def test_check_proves_a_level_whose_exit_is_walled_in_impossible_naming_the_place(
         tmp_path: Path) -> None:
     level = walled_in_copy(tmp_path)
-    result = subprocess.run([sys.executable, "-m", "game.levels", "check", str(level)],
-                            capture_output=True, text=True, timeout=600, check=False, cwd=ROOT)
+    result = call_main(levels_main, ["check", level], cwd=ROOT)
     assert result.returncode == 1, result.stdout + result.stderr
     line = next(line for line in result.stdout.splitlines() if "impossible" in line)
     assert line.startswith(f"{level}: tile (")
@@ -186,15 +187,14 @@ def test_check_proves_a_level_whose_exit_is_walled_in_impossible_naming_the_plac
 
 def test_check_can_skip_the_search(tmp_path: Path) -> None:
     level = walled_in_copy(tmp_path)
-    result = subprocess.run([sys.executable, "-m", "game.levels", "check", "--no-solve",
-                             str(level)], capture_output=True, text=True, timeout=120,
-                            check=False, cwd=ROOT)
+    result = call_main(levels_main, ["check", "--no-solve", level], cwd=ROOT)
     assert result.returncode == 0, result.stdout + result.stderr
     assert "not reached" not in result.stdout
 
 
 def test_solve_writes_a_script_the_game_replays_to_the_exit_and_a_picture(
         tmp_path: Path) -> None:
+    """Both programs themselves, end to end; the other commands here are called in-process."""
     script, picture, report = tmp_path / "route.txt", tmp_path / "route.png", tmp_path / "r.json"
     solved = subprocess.run([sys.executable, "-m", "game.levels", "solve", str(FIRST),
                              "--out", str(script), "--picture", str(picture)],
@@ -211,9 +211,7 @@ def test_solve_writes_a_script_the_game_replays_to_the_exit_and_a_picture(
 
 def test_solve_says_how_far_it_got_when_the_exit_is_walled_in(tmp_path: Path) -> None:
     level = walled_in_copy(tmp_path)
-    result = subprocess.run([sys.executable, "-m", "game.levels", "solve", str(level),
-                             "--out", str(tmp_path / "none.txt")],
-                            capture_output=True, text=True, timeout=600, check=False, cwd=ROOT)
+    result = call_main(levels_main, ["solve", level, "--out", tmp_path / "none.txt"], cwd=ROOT)
     assert result.returncode == 1
     assert result.stderr.startswith(f"{level}: tile (") and "impossible" in result.stderr
     assert not (tmp_path / "none.txt").exists()
@@ -253,6 +251,7 @@ def test_the_guide_quotes_the_measured_reach_and_its_pictures_exist() -> None:
 
 
 def test_check_says_not_decided_with_its_own_exit_status_when_the_budget_runs_out() -> None:
+    """The program itself: its exit status 3 is the one a script sees."""
     result = subprocess.run([sys.executable, "-m", "game.levels", "check", "--budget", "20",
                              str(FIRST)], capture_output=True, text=True, timeout=120,
                             check=False, cwd=ROOT)
@@ -266,9 +265,7 @@ def test_check_says_not_decided_with_its_own_exit_status_when_the_budget_runs_ou
 
 
 def test_check_with_seconds_still_stops_and_is_not_decided() -> None:
-    result = subprocess.run([sys.executable, "-m", "game.levels", "check", "--solve-seconds",
-                             "0.01", str(FIRST)], capture_output=True, text=True, timeout=120,
-                            check=False, cwd=ROOT)
+    result = call_main(levels_main, ["check", "--solve-seconds", "0.01", FIRST], cwd=ROOT)
     assert result.returncode == 3, result.stdout + result.stderr
     assert "not decided: the search found no route within its 0.01 s" in result.stdout
 

@@ -15,6 +15,7 @@ import pytest
 import pytmx
 
 from game.levels import LEVELS_DIR
+from game.levels.__main__ import main as levels_main
 from game.levels.classes import CLASSES, find
 from game.levels.project import (
     OBJECT_TYPES_FILE,
@@ -24,6 +25,7 @@ from game.levels.project import (
     generated_files,
 )
 from game.sim.tuning import Tuning
+from tests.in_process import call_main
 
 TILED = shutil.which("tiled")
 
@@ -35,8 +37,7 @@ def test_the_committed_tiled_files_are_the_generated_ones() -> None:
 
 
 def test_the_types_command_reports_up_to_date_files() -> None:
-    result = subprocess.run([sys.executable, "-m", "game.levels", "types"],
-                            capture_output=True, text=True, timeout=60, check=False)
+    result = call_main(levels_main, ["types"])
     assert result.returncode == 0 and result.stdout == ""
 
 

@@ -212,10 +212,14 @@ def measure(sizes: Sizes) -> list[Row]:
 def played_line(rows: list[Row]) -> tuple[str, list[int], list[float]]:
     """The level played, its ticks, and each tick's CPU time (median over the plays, ms)."""
     played = next(r.method for r in rows if r.parameter == "won")
-    ticks = sorted({int(r.parameter) for r in rows if r.method == played and
-                    r.parameter.isdigit()})
-    return played, ticks, [median(values(rows, method=played, parameter=str(t),
-                                         unit=TICK)) for t in ticks]
+    per_tick: dict[int, list[float]] = {}  # one pass over the rows, not one per tick
+    for row in rows:
+        if row.method == played and row.parameter.isdigit():
+            spent = per_tick.setdefault(int(row.parameter), [])
+            if row.unit == TICK:
+                spent.append(row.value)
+    ticks = sorted(per_tick)
+    return played, ticks, [median(per_tick[t]) for t in ticks]
 
 
 def p95_ms(rows: list[Row]) -> float:
