@@ -151,11 +151,10 @@ def pit_under_spikes() -> Level:
     """A pit 60 px wide (the void below it) under a row of spikes 40 px above the floor,
     reaching three tiles past the pit on each side.
 
-    60 px needs a running jump from the last ticks at the edge; a full jump rises 44 px into
-    the spikes, so the jump must be cut short by letting go of jump at the right tick. Of
-    every take-off tick near the edge and every hold from 1 to 24 ticks, running all the
-    way, only a jump on one tick held for exactly 7 ticks wins (measured by the script's
-    neighbours in test_the_pit_under_spikes_needs_one_exact_jump)."""
+    The pit needs a running jump, and a full jump puts the head into the spikes, so the jump
+    must be cut short by letting go of jump at the right tick. The script's jump leaves on
+    one tick and is held for exactly 7: leaving a tick earlier or later, or holding it a
+    tick less or more, loses (test_the_pit_under_spikes_needs_one_exact_jump)."""
     spikes = Box(EDGE - 3 * TILE, FLOOR - SPIKE_CEILING_PX - TILE, PIT_PX + 6 * TILE, TILE)
     return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, EDGE, 64),
                                          Box(EDGE + PIT_PX, FLOOR, WIDTH - EDGE - PIT_PX, 64)],
@@ -169,12 +168,11 @@ CORRIDOR_LEFT = 16 * TILE  # further from the spawn than a respawn's protection 
 def low_spikes_with_one_tile_between() -> Level:
     """Three rows of low spikes (4 px high, 40 px long) with one clean tile between them.
 
-    A jump at a run clears a row with two pixels to spare, and lands on the clean tile; the
-    body is 12 px wide and, coming down, spends a tick below the spikes' top on each side of
-    the tile, so it must leave the ground on the very tick after landing: a jump pressed
-    before landing, kept by the game's jump buffer (``jump_buffer_s``), or on that tick.
-    The script presses it while still in the air; a press a tick late loses (see
-    test_the_low_spikes_need_jumps_pressed_before_landing). The corridor starts further
+    A jump at a run from before a row comes down on the clean tile beyond it, and the next
+    row leaves the 12 px body little room there: the script's jumps leave the ground on the
+    first tick after each landing, pressed while still in the air and kept by the game's
+    jump buffer (``jump_buffer_s``). The same run with a jump leaving one tick later loses
+    (test_the_low_spikes_need_jumps_pressed_before_landing). The corridor starts further
     from the spawn than the protection of a respawn carries, so no life buys a way across."""
     rows = tuple(Box(CORRIDOR_LEFT + n * (LOW_SPIKES_WIDTH + SAFE_PX), FLOOR - LOW_SPIKES_PX,
                      LOW_SPIKES_WIDTH, LOW_SPIKES_PX) for n in range(3))
@@ -371,14 +369,14 @@ def test_the_pit_under_spikes_needs_one_exact_jump() -> None:
 
 def test_the_low_spikes_need_jumps_pressed_before_landing() -> None:
     """The script presses jump a tick or two before each landing, in the air (the buffer
-    keeps the press); pressed on the tick after the first landing instead, it loses."""
+    keeps the press); pressed so that the second jump leaves a tick later, it loses."""
     level = low_spikes_with_one_tile_between()
     assert SPAWN.right + TUNING.invulnerable_ticks * RUN_PX_PER_TICK < CORRIDOR_LEFT
     first, second, third = BUFFERED_PRESSES
     played = play(level, hold(jumps=[(p, 20) for p in BUFFERED_PRESSES]),
                   asked=(second, third))
     assert played.won and played.lives_lost == 0 and played.airborne == (True, True)
-    late = (first, second + 3, third + 3)
+    late = (first, second + 3, third + 3)  # the second jump leaves on tick 179, not 178
     assert not play(level, hold(jumps=[(p, 20) for p in late])).won
 
 
