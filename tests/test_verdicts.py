@@ -9,6 +9,7 @@ wrong: a winnable map is never called impossible, an unwinnable one never solved
 from __future__ import annotations
 
 import json
+import math
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from pathlib import Path
@@ -17,7 +18,7 @@ import pytest
 
 from game.collision.aabb import Box
 from game.levels.__main__ import EXIT_UNDECIDED, main
-from game.levels.reach import DEFAULT_LIMITS
+from game.levels.reach import DEFAULT_LIMITS, jump_path
 from game.levels.reachable import jump_rise, open_path, reachable
 from game.levels.solver import Effort, replay
 from game.levels.verdict import Kind, judge
@@ -165,7 +166,19 @@ LOW_SPIKES_PX, LOW_SPIKES_WIDTH, SAFE_PX = 4, 40, 16
 CORRIDOR_LEFT = 16 * TILE  # further from the spawn than a respawn's protection carries
 
 
-def low_spikes_with_one_tile_between() -> Level:
+def widest_low_row_cleared() -> float:
+    """How long a row of low spikes the best jump clears, from the game's own jump at a run
+    (:func:`jump_path`): on its first tick the body moves along x still on the floor, and it
+    must be past the row by the first tick it comes down below the spikes' top. A full jump
+    at full speed is the highest at every tick and the fastest across, so no jump does better.
+    """
+    path = jump_path(TUNING)
+    take_off = path[0].bottom
+    above = [tick for tick, box in enumerate(path) if take_off - box.bottom > LOW_SPIKES_PX]
+    return path[above[-1] + 1].x - path[above[0]].x - TUNING.player_width_px
+
+
+def low_spikes_with_one_tile_between(row_px: int = LOW_SPIKES_WIDTH) -> Level:
     """Three rows of low spikes (4 px high, 40 px long) with one clean tile between them.
 
     A jump at a run from before a row comes down on the clean tile beyond it, and the next
@@ -173,9 +186,12 @@ def low_spikes_with_one_tile_between() -> Level:
     first tick after each landing, pressed while still in the air and kept by the game's
     jump buffer (``jump_buffer_s``). The same run with a jump leaving one tick later loses
     (test_the_low_spikes_need_jumps_pressed_before_landing). The corridor starts further
-    from the spawn than the protection of a respawn carries, so no life buys a way across."""
-    rows = tuple(Box(CORRIDOR_LEFT + n * (LOW_SPIKES_WIDTH + SAFE_PX), FLOOR - LOW_SPIKES_PX,
-                     LOW_SPIKES_WIDTH, LOW_SPIKES_PX) for n in range(3))
+    from the spawn than the protection of a respawn carries, so no life buys a way across.
+
+    Its twin has rows ``row_px`` one pixel longer than :func:`widest_low_row_cleared`: every
+    jump touches them, so it cannot be won."""
+    rows = tuple(Box(CORRIDOR_LEFT + n * (row_px + SAFE_PX), FLOOR - LOW_SPIKES_PX, row_px,
+                     LOW_SPIKES_PX) for n in range(3))
     return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, WIDTH, 64)], SPAWN, [exit_on(FLOOR)],
                             hazards=rows)
 
@@ -252,6 +268,8 @@ UNWINNABLE: dict[str, Callable[[], Level]] = {
     "spikes far from the spawn with no checkpoint":
         lambda: spikes_crossed_from_a_checkpoint(flag=False),
     "ledge over a jump, with no hopper to stomp": lambda: ledge_above_a_hopper(hopper=False),
+    "low spikes a pixel longer than any jump clears":
+        lambda: low_spikes_with_one_tile_between(math.floor(widest_low_row_cleared()) + 1),
 }
 
 
@@ -378,6 +396,11 @@ def test_the_low_spikes_need_jumps_pressed_before_landing() -> None:
     assert played.won and played.lives_lost == 0 and played.airborne == (True, True)
     late = (first, second + 3, third + 3)  # the second jump leaves on tick 179, not 178
     assert not play(level, hold(jumps=[(p, 20) for p in late])).won
+
+
+def test_the_low_spikes_are_shorter_than_the_widest_row_a_jump_clears() -> None:
+    """And their twin's, one pixel longer than that, are not (see UNWINNABLE)."""
+    assert LOW_SPIKES_WIDTH < widest_low_row_cleared() == 42
 
 
 ASCII_WIDTH = 40
