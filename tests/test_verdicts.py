@@ -81,7 +81,8 @@ def ferry() -> Level:
 
 
 # Maps that need the game's finer rules. Each comes with an input script (a function from the
-# tick to the keys held) that wins it when the real game plays it; see test_..._script_wins.
+# tick to the keys held) that wins it when the real game plays it
+# (test_each_script_wins_its_map_in_the_game).
 
 Script = Callable[[int], Actions]
 RIGHT, JUMP = Action.RIGHT, Action.JUMP
@@ -294,8 +295,9 @@ def test_an_unwinnable_map_is_never_called_solved(name: str) -> None:
 
 @pytest.mark.parametrize("name", ["gap of 4 tiles", "ledge of 2 tiles",
                                   "drop through a one-way floor", "ferry over a pit",
-                                  "gap at the widest running jump"])
-def test_the_plain_winnable_maps_are_solved_by_a_route_that_replays(name: str) -> None:
+                                  "gap at the widest running jump",
+                                  "low spikes crossed with buffered jumps"])
+def test_these_winnable_maps_are_solved_by_a_route_that_replays(name: str) -> None:
     verdict = judge(WINNABLE[name](), EFFORT)  # solve() replays every route it returns
     assert verdict.kind is Kind.SOLVED, verdict.finding
     assert verdict.solution is not None and verdict.solution.found
