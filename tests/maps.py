@@ -109,11 +109,13 @@ def write_tmx(folder: Path, rows: list[str], name: str = "level.tmx",
 
 def level_from_boxes(cols: int, rows: int, solids: list[Box], spawn: Box, exits: list[Box],
                      one_ways: tuple[Box, ...] = (), platforms: tuple[PlatformSpec, ...] = (),
-                     checkpoints: tuple[Box, ...] = ()) -> Level:
-    """A level whose solid and one-way ground is given in pixels (cut into the cells it
-    covers), for edges that fall between tile lines: a gap of 76 px, a ledge 44 px high."""
+                     checkpoints: tuple[Box, ...] = (), hazards: tuple[Box, ...] = (),
+                     enemies: tuple[EnemySpec, ...] = ()) -> Level:
+    """A level whose solid, one-way and hazard ground is given in pixels (cut into the cells
+    it covers), for edges that fall between tile lines: a gap of 76 px, a ledge 44 px high."""
     grid = TileGrid(cols, rows, TILE, TILE)
-    for kind, boxes in ((TileKind.SOLID, solids), (TileKind.ONE_WAY, one_ways)):
+    for kind, boxes in ((TileKind.SOLID, solids), (TileKind.ONE_WAY, one_ways),
+                        (TileKind.HAZARD, hazards)):
         for box in boxes:
             for col in range(math.floor(box.left / TILE), math.ceil(box.right / TILE)):
                 for row in range(math.floor(box.top / TILE), math.ceil(box.bottom / TILE)):
@@ -123,7 +125,7 @@ def level_from_boxes(cols: int, rows: int, solids: list[Box], spawn: Box, exits:
                         grid.put(col, row, TileShape(Box(x0, y0, x1 - x0, y1 - y0), kind,
                                                      col, row))
     return Level(path=Path("test.tmx"), grid=grid, spawn=spawn, exits=tuple(exits),
-                 platforms=platforms, checkpoints=checkpoints)
+                 platforms=platforms, checkpoints=checkpoints, enemies=enemies)
 
 
 # A ledge of seven tiles over nothing, the spawn near its left end: for running off an edge

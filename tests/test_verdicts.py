@@ -1,22 +1,34 @@
 """The checker's verdicts on maps whose truth is known by construction: gaps and ledges at and
 past the player's measured limits, a drop through a one-way floor, a ferry over a pit, sealed
-caves and caves sealed only by physics. No verdict may be wrong: a winnable map is never
-called impossible, an unwinnable one never solved."""
+caves and caves sealed only by physics; and maps that need the game's finer rules: spikes
+crossed only after losing a life, a checkpoint's respawn, a stomp's bounce, one exact jump
+under spikes, jumps buffered before landing. Each of those is won by an input script written
+here and played in the real game, which is what makes its truth known. No verdict may be
+wrong: a winnable map is never called impossible, an unwinnable one never solved."""
 
 from __future__ import annotations
+
+import json
+import math
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from pathlib import Path
 
 import pytest
 
 from game.collision.aabb import Box
-from game.levels.reach import DEFAULT_LIMITS
+from game.levels.__main__ import EXIT_UNDECIDED, main
+from game.levels.reach import DEFAULT_LIMITS, jump_path
 from game.levels.reachable import jump_rise, open_path, reachable
-from game.levels.solver import Effort
+from game.levels.solver import Effort, replay
 from game.levels.verdict import Kind, judge
-from game.sim.level import Level
+from game.sim.campaign import Campaign, Outcome
+from game.sim.inputs import Action, Actions
+from game.sim.level import EnemySpec, Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.tuning import Tuning
 from game.sim.world import World
-from tests.maps import level_from_boxes
+from tests.maps import level_from_boxes, write_tmx
 
 COLS, ROWS, TILE = 40, 14, 16
 WIDTH, FLOOR = COLS * TILE, 10 * TILE  # the floor's top
@@ -68,7 +80,177 @@ def ferry() -> Level:
                             SPAWN, [exit_on(FLOOR)], platforms=(ride,))
 
 
-WINNABLE = {
+# Maps that need the game's finer rules. Each comes with an input script (a function from the
+# tick to the keys held) that wins it when the real game plays it
+# (test_each_script_wins_its_map_in_the_game).
+
+Script = Callable[[int], Actions]
+RIGHT, JUMP = Action.RIGHT, Action.JUMP
+TUNING = Tuning()
+RUN_PX_PER_TICK = TUNING.run_speed_px_s * TUNING.tick_s  # the fastest the player moves across
+FULL_JUMP_TICKS = len(jump_rise(TUNING)) - 1  # the longest a jump from a floor stays up
+SPIKES_PX = 16  # a row of spikes one tile high, lying on the floor
+NEAR_SPIKES = (4 * TILE, 5 * TILE)  # where a row begins and how long it is, in px
+FAR_SPIKES = (14 * TILE, 5 * TILE)
+
+
+def spikes_on_the_floor(left: int, width: int, flags: tuple[Box, ...] = ()) -> Level:
+    """Flat ground with a row of spikes ``width`` px long from ``left``; the Exit beyond."""
+    return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, WIDTH, 64)], SPAWN, [exit_on(FLOOR)],
+                            hazards=(Box(left, FLOOR - SPIKES_PX, width, SPIKES_PX),),
+                            checkpoints=flags)
+
+
+def spikes_crossed_after_a_life() -> Level:
+    """Spikes five tiles long, starting two tiles from the spawn.
+
+    No jump clears them (a jump from the flat stays up for FULL_JUMP_TICKS, too short to
+    carry the body over), so they must be touched, and touching them costs a life unless the
+    player is invulnerable, which only a respawn makes them. The respawn is at the spawn,
+    close enough that the 1.5 s of protection carries the player across: the map is won
+    only after losing a life (test_the_spikes_need_a_life_and_a_respawn_near_them)."""
+    return spikes_on_the_floor(*NEAR_SPIKES)
+
+
+FLAG = Box(12 * TILE, FLOOR - 32, 16, 32)  # a checkpoint two tiles before the spikes
+
+
+def spikes_crossed_from_a_checkpoint(flag: bool = True) -> Level:
+    """Spikes five tiles long, far from the spawn, with a checkpoint just before them.
+
+    As above, they are crossed only while invulnerable after a respawn. From the spawn the
+    protection runs out before the player even reaches them; from the checkpoint it carries
+    the player across. So the map is won through the checkpoint's respawn, and without the
+    flag (``flag=False``) it cannot be won at all."""
+    return spikes_on_the_floor(*FAR_SPIKES, (FLAG,) if flag else ())
+
+
+BOUNCE_LEDGE_PX = DEFAULT_LIMITS.ledge_px + 8  # higher than any jump from the floor
+
+
+def ledge_above_a_hopper(hopper: bool = True) -> Level:
+    """A ledge higher than the highest jump, with a hopper that hops on the spot at its foot.
+
+    A jump from the floor rises at most ``DEFAULT_LIMITS.ledge_px`` (measured by the game),
+    so no jump reaches the ledge. A stomp bounces the player up at ``stomp_bounce_px_s``
+    (slower than a jump) from wherever the enemy's head is: from a hopper sitting on the
+    floor, its head 12 px up, the bounce rises less than a jump would; from a hopper near the
+    top of its hop it carries the feet above the ledge. A stomped enemy is gone, so the one
+    way up is a stomp on the hopper in the air. Without it (``hopper=False``) the map is a
+    ledge too high."""
+    enemies = (EnemySpec(Box(EDGE - 14, FLOOR - 12, 14, 12), 0.0, "hopper"),) if hopper else ()
+    return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, WIDTH, 64),
+                                         Box(EDGE, FLOOR - BOUNCE_LEDGE_PX, WIDTH - EDGE,
+                                             BOUNCE_LEDGE_PX)],
+                            Box(EDGE - 60, SPAWN.y, SPAWN.w, SPAWN.h),
+                            [exit_on(FLOOR - BOUNCE_LEDGE_PX)], enemies=enemies)
+
+
+PIT_PX, SPIKE_CEILING_PX = 60, 40
+
+
+def pit_under_spikes() -> Level:
+    """A pit 60 px wide (the void below it) under a row of spikes 40 px above the floor,
+    reaching three tiles past the pit on each side.
+
+    The pit needs a running jump, and a full jump puts the head into the spikes, so the jump
+    must be cut short by letting go of jump at the right tick. The script's jump leaves on
+    one tick and is held for exactly 7: leaving a tick earlier or later, or holding it a
+    tick less or more, loses (test_the_pit_under_spikes_needs_one_exact_jump)."""
+    spikes = Box(EDGE - 3 * TILE, FLOOR - SPIKE_CEILING_PX - TILE, PIT_PX + 6 * TILE, TILE)
+    return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, EDGE, 64),
+                                         Box(EDGE + PIT_PX, FLOOR, WIDTH - EDGE - PIT_PX, 64)],
+                            SPAWN, [exit_on(FLOOR)], hazards=(spikes,))
+
+
+LOW_SPIKES_PX, LOW_SPIKES_WIDTH, SAFE_PX = 4, 40, 16
+CORRIDOR_LEFT = 16 * TILE  # further from the spawn than a respawn's protection carries
+
+
+def widest_low_row_cleared() -> float:
+    """How long a row of low spikes the best jump clears, from the game's own jump at a run
+    (:func:`jump_path`): on its first tick the body moves along x still on the floor, and it
+    must be past the row by the first tick it comes down below the spikes' top. A full jump
+    at full speed is the highest at every tick and the fastest across, so no jump does better.
+    """
+    path = jump_path(TUNING)
+    take_off = path[0].bottom
+    above = [tick for tick, box in enumerate(path) if take_off - box.bottom > LOW_SPIKES_PX]
+    return path[above[-1] + 1].x - path[above[0]].x - TUNING.player_width_px
+
+
+def low_spikes_with_one_tile_between(row_px: int = LOW_SPIKES_WIDTH) -> Level:
+    """Three rows of low spikes (4 px high, 40 px long) with one clean tile between them.
+
+    A jump at a run from before a row comes down on the clean tile beyond it, and the next
+    row leaves the 12 px body little room there: the script's jumps leave the ground on the
+    first tick after each landing, pressed while still in the air and kept by the game's
+    jump buffer (``jump_buffer_s``). The same run with a jump leaving one tick later loses
+    (test_the_low_spikes_need_jumps_pressed_before_landing). The corridor starts further
+    from the spawn than the protection of a respawn carries, so no life buys a way across.
+
+    Its twin has rows ``row_px`` one pixel longer than :func:`widest_low_row_cleared`: every
+    jump touches them, so it cannot be won."""
+    rows = tuple(Box(CORRIDOR_LEFT + n * (row_px + SAFE_PX), FLOOR - LOW_SPIKES_PX, row_px,
+                     LOW_SPIKES_PX) for n in range(3))
+    return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, WIDTH, 64)], SPAWN, [exit_on(FLOOR)],
+                            hazards=rows)
+
+
+def hold(right_from: int = 0, jumps: Iterable[tuple[int, int]] = ()) -> Script:
+    """A script: run right from tick ``right_from`` on; hold jump for each (first tick, ticks)."""
+    spans = tuple(jumps)
+
+    def held(tick: int) -> Actions:
+        keys = {RIGHT} if tick >= right_from else set()
+        if any(start <= tick < start + length for start, length in spans):
+            keys.add(JUMP)
+        return frozenset(keys)
+    return held
+
+
+@dataclass(frozen=True)
+class Played:
+    """How a script's run went: won or not, lives lost and enemies stomped on the way, and
+    whether the player was in the air on each tick listed in ``asked``."""
+
+    won: bool
+    lives_lost: int
+    stomps: int
+    airborne: tuple[bool, ...] = ()
+
+
+def play(level: Level, script: Script, asked: tuple[int, ...] = (),
+         ticks: int = 1_200) -> Played:
+    """Play ``script`` on ``level`` as the game does (a run with its lives) until it wins, is
+    lost, or ``ticks`` pass."""
+    campaign = Campaign(level.path, loader=lambda _path: level)
+    airborne: dict[int, bool] = {}
+    for tick in range(ticks):
+        airborne[tick] = not campaign.world.player.on_ground  # as the tick will read it
+        campaign.tick(script(tick))
+        if campaign.levels_completed or campaign.outcome is not Outcome.RUNNING:
+            break
+    return Played(campaign.levels_completed > 0, campaign.deaths, campaign.enemies_stomped,
+                  tuple(airborne.get(tick, False) for tick in asked))
+
+
+# The winning scripts, written by hand from the maps' measures (run right, jump here).
+BUFFERED_PRESSES = (140, 176, 213)  # the last two while the player is still in the air
+WON_BY_SCRIPT: dict[str, tuple[Callable[[], Level], Script]] = {
+    "spikes crossed after losing a life": (spikes_crossed_after_a_life, hold()),
+    "spikes crossed from a checkpoint": (spikes_crossed_from_a_checkpoint, hold()),
+    "ledge reached by a stomp on a hopper": (ledge_above_a_hopper,
+                                             hold(right_from=44, jumps=[(61, 200)])),
+    "pit under spikes crossed by one exact jump": (pit_under_spikes,
+                                                   hold(jumps=[(113, 7)])),
+    "low spikes crossed with buffered jumps": (
+        low_spikes_with_one_tile_between,
+        hold(jumps=[(press, 20) for press in BUFFERED_PRESSES])),
+}
+
+
+WINNABLE: dict[str, Callable[[], Level]] = {
     "gap of 4 tiles": lambda: gap(64),
     "gap at the widest running jump": lambda: gap(DEFAULT_LIMITS.gap_px),
     "gap that needs a coyote jump": lambda: gap(DEFAULT_LIMITS.coyote_gap_px),
@@ -76,20 +258,33 @@ WINNABLE = {
     "ledge at the highest jump": lambda: ledge(DEFAULT_LIMITS.ledge_px),
     "drop through a one-way floor": drop_through,
     "ferry over a pit": ferry,
+    **{name: make for name, (make, _) in WON_BY_SCRIPT.items()},
 }
-UNWINNABLE = {
+UNWINNABLE: dict[str, Callable[[], Level]] = {
     "gap one pixel past the widest jump": lambda: gap(DEFAULT_LIMITS.coyote_gap_px + 1),
     "gap of 7 tiles": lambda: gap(112),
     "ledge one pixel over the highest jump": lambda: ledge(DEFAULT_LIMITS.ledge_px + 1),
     "ledge of 3 tiles": lambda: ledge(48),
     "sealed cave": sealed_cave,
+    "spikes far from the spawn with no checkpoint":
+        lambda: spikes_crossed_from_a_checkpoint(flag=False),
+    "ledge over a jump, with no hopper to stomp": lambda: ledge_above_a_hopper(hopper=False),
+    "low spikes a pixel longer than any jump clears":
+        lambda: low_spikes_with_one_tile_between(math.floor(widest_low_row_cleared()) + 1),
 }
 
 
 @pytest.mark.parametrize("name", sorted(WINNABLE))
 def test_a_winnable_map_is_never_called_impossible(name: str) -> None:
-    verdict = judge(WINNABLE[name](), EFFORT)
+    """Solved with a route that replays, or honestly not decided: never impossible."""
+    level = WINNABLE[name]()
+    verdict = judge(level, EFFORT)
     assert verdict.kind is not Kind.IMPOSSIBLE, verdict.finding
+    assert verdict.solution is not None
+    if verdict.kind is Kind.SOLVED:
+        assert replay(level.path, verdict.solution.held, level)[0]
+    else:
+        assert not verdict.solution.found and verdict.finding.startswith("not decided")
 
 
 @pytest.mark.parametrize("name", sorted(UNWINNABLE))
@@ -100,8 +295,9 @@ def test_an_unwinnable_map_is_never_called_solved(name: str) -> None:
 
 @pytest.mark.parametrize("name", ["gap of 4 tiles", "ledge of 2 tiles",
                                   "drop through a one-way floor", "ferry over a pit",
-                                  "gap at the widest running jump"])
-def test_the_plain_winnable_maps_are_solved_by_a_route_that_replays(name: str) -> None:
+                                  "gap at the widest running jump",
+                                  "low spikes crossed with buffered jumps"])
+def test_these_winnable_maps_are_solved_by_a_route_that_replays(name: str) -> None:
     verdict = judge(WINNABLE[name](), EFFORT)  # solve() replays every route it returns
     assert verdict.kind is Kind.SOLVED, verdict.finding
     assert verdict.solution is not None and verdict.solution.found
@@ -147,3 +343,102 @@ def test_the_same_map_gets_the_same_verdict_and_work_every_time() -> None:
     assert first.solution is not None and second.solution is not None
     assert first.solution.moves_tried == second.solution.moves_tried
     assert first.solution.script() == second.solution.script()
+
+
+@pytest.mark.parametrize("name", sorted(WON_BY_SCRIPT))
+def test_each_script_wins_its_map_in_the_game(name: str) -> None:
+    make, script = WON_BY_SCRIPT[name]
+    assert play(make(), script).won
+
+
+def test_the_spikes_need_a_life_and_a_respawn_near_them() -> None:
+    """No jump clears the spikes; the respawn's protection carries the player across."""
+    left, width = NEAR_SPIKES
+    assert width + SPAWN.w > FULL_JUMP_TICKS * RUN_PX_PER_TICK  # a jump's whole flight
+    assert left + width < SPAWN.left + TUNING.invulnerable_ticks * RUN_PX_PER_TICK
+    played = play(spikes_crossed_after_a_life(), hold())
+    assert played.won and played.lives_lost == 1
+
+
+def test_without_its_checkpoint_the_far_spikes_cannot_be_crossed() -> None:
+    """The protection after a respawn at the spawn runs out before the spikes begin, and no
+    jump clears them: without the flag, every way across touches them unprotected."""
+    left, width = FAR_SPIKES
+    assert SPAWN.right + TUNING.invulnerable_ticks * RUN_PX_PER_TICK < left
+    assert width + SPAWN.w > FULL_JUMP_TICKS * RUN_PX_PER_TICK
+    with_flag = play(spikes_crossed_from_a_checkpoint(), hold())
+    assert with_flag.won and with_flag.lives_lost == 1
+    assert not play(spikes_crossed_from_a_checkpoint(flag=False), hold()).won
+
+
+def test_the_ledge_is_reached_only_by_a_stomp_in_the_air() -> None:
+    _, script = WON_BY_SCRIPT["ledge reached by a stomp on a hopper"]
+    assert DEFAULT_LIMITS.ledge_px < BOUNCE_LEDGE_PX
+    played = play(ledge_above_a_hopper(), script)
+    assert played.won and played.stomps == 1 and played.lives_lost == 0
+    assert not play(ledge_above_a_hopper(hopper=False), script).won  # the same keys
+
+
+def test_the_pit_under_spikes_needs_one_exact_jump() -> None:
+    """The winning jump leaves on tick 113 and is held 7 ticks: a tick either way loses."""
+    level = pit_under_spikes()
+    assert play(level, hold(jumps=[(113, 7)])).won
+    for take_off, ticks in ((112, 7), (114, 7), (113, 6), (113, 8)):
+        assert not play(level, hold(jumps=[(take_off, ticks)])).won, (take_off, ticks)
+
+
+def test_the_low_spikes_need_jumps_pressed_before_landing() -> None:
+    """The script presses jump a tick or two before each landing, in the air (the buffer
+    keeps the press); pressed so that the second jump leaves a tick later, it loses."""
+    level = low_spikes_with_one_tile_between()
+    assert SPAWN.right + TUNING.invulnerable_ticks * RUN_PX_PER_TICK < CORRIDOR_LEFT
+    first, second, third = BUFFERED_PRESSES
+    played = play(level, hold(jumps=[(p, 20) for p in BUFFERED_PRESSES]),
+                  asked=(second, third))
+    assert played.won and played.lives_lost == 0 and played.airborne == (True, True)
+    late = (first, second + 3, third + 3)  # the second jump leaves on tick 179, not 178
+    assert not play(level, hold(jumps=[(p, 20) for p in late])).won
+
+
+def test_the_low_spikes_are_shorter_than_the_widest_row_a_jump_clears() -> None:
+    """And their twin's, one pixel longer than that, are not (see UNWINNABLE)."""
+    assert LOW_SPIKES_WIDTH < widest_low_row_cleared() == 42
+
+
+ASCII_WIDTH = 40
+
+
+def ascii_floor(spikes: range = range(0), gap: range = range(0)) -> list[str]:
+    """Rows of a map in whole tiles: the spawn at column 2, the Exit at column 37, a floor
+    four rows deep with ``gap`` columns open, and spikes on the floor in ``spikes``."""
+    above = [" " * ASCII_WIDTH for _ in range(9)]
+    row9 = "".join("P" if c == 2 else "D" if c == 37 else "^" if c in spikes else " "
+                   for c in range(ASCII_WIDTH))
+    floor = "".join(" " if c in gap else "#" for c in range(ASCII_WIDTH))
+    return [*above, row9, floor, floor, floor, floor]
+
+
+def test_the_check_summary_never_counts_a_map_as_solved_that_was_not(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Written as Tiled files and checked as a folder: a plain gap (winnable), spikes crossed
+    after a life (winnable, as above) and spikes far from the spawn (not winnable)."""
+    winnable = {"gap.tmx": ascii_floor(gap=range(12, 16)),
+                "spikes_after_a_life.tmx": ascii_floor(spikes=range(4, 9))}
+    unwinnable = {"spikes_out_of_reach.tmx": ascii_floor(spikes=range(14, 19))}
+    for name, rows in {**winnable, **unwinnable}.items():
+        write_tmx(tmp_path, rows, name)
+    status = main(["check", "--budget", str(EFFORT.budget), "--jobs", "1",
+                   "--format", "json", str(tmp_path)])
+    report = json.loads(capsys.readouterr().out)
+    verdicts = {Path(m["path"]).name: m["verdict"] for m in report["maps"]}
+    assert verdicts["gap.tmx"] == "solved"
+    assert verdicts["spikes_after_a_life.tmx"] in ("solved", "not decided")
+    assert verdicts["spikes_out_of_reach.tmx"] in ("impossible", "not decided")
+    solved = [name for name, verdict in verdicts.items() if verdict == "solved"]
+    assert set(solved) <= set(winnable)
+    summary = report["summary"]
+    assert f"{len(solved)} solved" in summary and "all playable" not in summary
+    undecided = sum(verdict == "not decided" for verdict in verdicts.values())
+    if undecided:
+        assert f"{undecided} not decided" in summary
+    assert status != 0 and (status == EXIT_UNDECIDED) == ("impossible" not in verdicts.values())
