@@ -8,6 +8,7 @@ wrong: a winnable map is never called impossible, an unwinnable one never solved
 
 from __future__ import annotations
 
+import functools
 import json
 import math
 from collections.abc import Callable, Iterable
@@ -21,7 +22,7 @@ from game.levels.__main__ import EXIT_UNDECIDED, main
 from game.levels.reach import DEFAULT_LIMITS, jump_path
 from game.levels.reachable import jump_rise, open_path, reachable
 from game.levels.solver import Effort, replay
-from game.levels.verdict import Kind, judge
+from game.levels.verdict import Kind, Verdict, judge
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, Actions
 from game.sim.level import EnemySpec, Level
@@ -274,11 +275,18 @@ UNWINNABLE: dict[str, Callable[[], Level]] = {
 }
 
 
+@functools.cache
+def judged(name: str) -> tuple[Level, Verdict]:
+    """A known map, by name, and its verdict at :data:`EFFORT` (the same every time: the
+    search is bounded by work, so several tests may share one judging)."""
+    level = {**WINNABLE, **UNWINNABLE}[name]()
+    return level, judge(level, EFFORT)
+
+
 @pytest.mark.parametrize("name", sorted(WINNABLE))
 def test_a_winnable_map_is_never_called_impossible(name: str) -> None:
     """Solved with a route that replays, or honestly not decided: never impossible."""
-    level = WINNABLE[name]()
-    verdict = judge(level, EFFORT)
+    level, verdict = judged(name)
     assert verdict.kind is not Kind.IMPOSSIBLE, verdict.finding
     assert verdict.solution is not None
     if verdict.kind is Kind.SOLVED:
@@ -289,23 +297,25 @@ def test_a_winnable_map_is_never_called_impossible(name: str) -> None:
 
 @pytest.mark.parametrize("name", sorted(UNWINNABLE))
 def test_an_unwinnable_map_is_never_called_solved(name: str) -> None:
-    verdict = judge(UNWINNABLE[name](), EFFORT)
+    _, verdict = judged(name)
     assert verdict.kind is not Kind.SOLVED, verdict.finding
 
 
 @pytest.mark.parametrize("name", ["gap of 4 tiles", "ledge of 2 tiles",
                                   "drop through a one-way floor", "ferry over a pit",
                                   "gap at the widest running jump",
-                                  "low spikes crossed with buffered jumps"])
+                                  "low spikes crossed with buffered jumps",
+                                  "spikes crossed after losing a life",
+                                  "spikes crossed from a checkpoint"])
 def test_these_winnable_maps_are_solved_by_a_route_that_replays(name: str) -> None:
-    verdict = judge(WINNABLE[name](), EFFORT)  # solve() replays every route it returns
+    _, verdict = judged(name)  # solve() replays every route it returns
     assert verdict.kind is Kind.SOLVED, verdict.finding
     assert verdict.solution is not None and verdict.solution.found
 
 
 @pytest.mark.parametrize("name", ["gap of 7 tiles", "ledge of 3 tiles", "sealed cave"])
 def test_maps_far_past_the_reach_or_walled_off_are_proven_impossible(name: str) -> None:
-    verdict = judge(UNWINNABLE[name](), EFFORT)
+    _, verdict = judged(name)
     assert verdict.kind is Kind.IMPOSSIBLE, verdict.finding
     assert verdict.solution is None  # proven without a search
     assert verdict.tile is not None

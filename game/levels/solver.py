@@ -56,7 +56,10 @@ What it teaches: a **beam search** over a deterministic simulation.
   narrows again once it has come closer than any beam before: the work already done before
   the hard place is kept, not done again.
 * **Losing a life** is allowed while lives remain (the game lets a player finish after one):
-  the branch carries on from the respawn place, counting the life lost, behind a penalty.
+  the branch carries on from the respawn place, counting the life lost. A lost life adds
+  nothing to the score: the respawn place's own distance to an Exit is what counts, so a
+  route that needs a life lost (spikes crossed while the respawn's protection lasts) is not
+  put off behind every state that kept its lives.
 
 The search never proves a map *impossible*: :mod:`game.levels.reachable` does that, and
 :mod:`game.levels.verdict` asks it first. Everything is deterministic: the search is bounded
@@ -107,7 +110,6 @@ HISTORY_LAYERS = 400  # ... but no further back than this (or else to the spawn)
 PER_CELL = 1  # a beam keeps at most this many states in one tile while others are left
 UNREACHABLE = math.inf
 BEST_FIRST_WEIGHT = 3.0  # how much more a tile of distance counts than a tile's worth of time
-DEATH_PENALTY_TILES = 20.0  # losing a life costs as much as this much distance
 FEET_PX = 0.5  # the search scores the cell just above the middle of the feet
 DEFAULT_BUDGET = 50_000  # moves the search may try on one map (each move is 6 ticks)
 WAIT_TICKS = 30  # the wait macro: stand still this long, for a moving platform to come round
@@ -371,7 +373,7 @@ class _Search:
         if key in seen:
             return None
         seen[key] = layer
-        score = self.score() + lost * DEATH_PENALTY_TILES
+        score = self.score()
         if score == UNREACHABLE:
             return None  # no way on to an Exit from here, by the proof of reachable
         self.states += 1
