@@ -4,7 +4,7 @@ The wheel is built from a copy of the repository, installed into a fresh virtual
 environment (by this environment's pip, so the new one needs no pip of its own), and run as
 ``tile-hopper`` from a folder that holds nothing of the game: the campaign, the tileset, the
 art and the sounds must all come from inside the installed package. Building and installing
-take a minute, so the test carries the ``install`` mark
+take seconds (about 12 s of CPU), so the test carries the ``install`` mark
 (``pytest -m "not install"`` skips it); CI runs it.
 """
 
