@@ -22,12 +22,13 @@ from __future__ import annotations
 
 import contextlib
 import io
-import signal
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+
+from tests.hang_guard import hang_guard
 
 
 class Hung(BaseException):
@@ -64,17 +65,8 @@ def _stopped_after(seconds: float | None) -> Iterator[None]:
     if seconds is None:
         yield
         return
-
-    def expire(_signal: int, _frame: object) -> None:
-        raise Hung(f"still running after {seconds} s: it hangs")
-
-    previous = signal.signal(signal.SIGALRM, expire)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
+    with hang_guard(seconds, Hung):
         yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
 
 
 def _pipe() -> io.TextIOWrapper:
