@@ -17,7 +17,7 @@ from game.sim.inputs import NOTHING, Action
 from game.sim.level import CoinSpec, EnemySpec, Level
 from game.sim.platforms import PlatformSpec
 from game.sim.tuning import Tuning
-from game.sim.world import Measure, World
+from game.sim.world import EventKind, Measure, World
 
 TILE = 16
 KINDS = {"#": TileKind.SOLID, "-": TileKind.ONE_WAY, "^": TileKind.HAZARD}
@@ -169,3 +169,36 @@ def jump_under_the_ceiling_from(x: float) -> tuple[World, float]:
         world.step(frozenset({Action.JUMP}))
         highest = min(highest, world.player.box.top)
     return world, highest
+
+
+# A one-way shelf under the spawn, and the floor three tiles below it: for dropping through.
+ONE_WAY_SHELF = ["          ",
+                 "          ",
+                 "  P       ",
+                 "  ----    ",
+                 "          ",
+                 "          ",
+                 "##########"]
+
+# The spawn five tiles above a floor: for jumps pressed while falling (the jump buffer).
+DROP = ["  P        ", "           ", "           ", "           ", "           ",
+        "           ", "###########"]
+
+
+def jump_pressed_before_landing(ticks_early: int, tuning: Tuning | None = None,
+                                ) -> tuple[bool, int]:
+    """Fall onto the floor of :data:`DROP` holding jump from ``ticks_early`` ticks before the
+    first tick that starts on the ground. Returns whether a jump happened, and on which tick."""
+    tuning = tuning or Tuning()
+    probe = World(level_from_ascii(DROP), tuning)
+    first_on_ground = 0
+    while not probe.player.on_ground:
+        probe.step(NOTHING)
+        first_on_ground += 1
+    world = World(level_from_ascii(DROP), tuning)
+    jump = frozenset({Action.JUMP})
+    for tick in range(first_on_ground + 3):
+        events = world.step(jump if tick >= first_on_ground - ticks_early else NOTHING)
+        if any(event.kind is EventKind.JUMP for event in events):
+            return True, tick
+    return False, -1

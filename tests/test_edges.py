@@ -26,7 +26,10 @@ from game.sim.solids import LevelSolids
 from game.sim.tuning import Tuning
 from game.sim.world import Event, EventKind, World
 from tests.maps import (
+    DROP,
     LEDGE,
+    ONE_WAY_SHELF,
+    jump_pressed_before_landing,
     jump_under_the_ceiling_from,
     level_from_ascii,
     settled,
@@ -79,25 +82,6 @@ def test_a_jump_pressed_1_tick_after_running_off_a_ledge_happens() -> None:
 
 
 # --- Jump buffer: a jump pressed up to 6 ticks before landing happens on landing ------------
-
-DROP = ["  P        ", "           ", "           ", "           ", "           ",
-        "           ", "###########"]
-
-
-def jump_pressed_before_landing(ticks_early: int) -> tuple[bool, int]:
-    """Fall onto a floor holding jump from ``ticks_early`` ticks before the first tick that
-    starts on the ground. Returns whether a jump happened, and on which tick."""
-    probe = World(level_from_ascii(DROP), TUNING)
-    first_on_ground = 0
-    while not probe.player.on_ground:
-        probe.step(NOTHING)
-        first_on_ground += 1
-    world = World(level_from_ascii(DROP), TUNING)
-    for tick in range(first_on_ground + 3):
-        if jumped(world.step(JUMP if tick >= first_on_ground - ticks_early else NOTHING)):
-            return True, tick
-    return False, -1
-
 
 def test_the_promised_jump_buffer_is_6_ticks() -> None:
     assert TUNING.jump_buffer_ticks == 6
@@ -551,17 +535,8 @@ def test_the_ground_probe_looks_past_a_shape_it_cannot_stand_on() -> None:
 
 # --- Drop through: down + jump on a one-way tile ignores one-way tiles for 8 ticks ---------
 
-ONE_WAY_LEVEL = ["          ",
-                 "          ",
-                 "  P       ",
-                 "  ----    ",
-                 "          ",
-                 "          ",
-                 "##########"]
-
-
 def test_down_and_jump_on_a_one_way_tile_drops_for_8_ticks_without_jumping() -> None:
-    world = settled(ONE_WAY_LEVEL)
+    world = settled(ONE_WAY_SHELF)
     events = world.step(DOWN_JUMP)
     assert not jumped(events)
     ticks_dropping = 1
@@ -579,7 +554,7 @@ def test_down_and_jump_on_solid_ground_is_an_ordinary_jump() -> None:
 
 
 def test_holding_down_and_jump_on_a_one_way_tile_drops_only_on_the_press() -> None:
-    world = settled(ONE_WAY_LEVEL)
+    world = settled(ONE_WAY_SHELF)
     world.step(DOWN)
     assert not world.player.dropping_through
     world.step(JUMP)          # jump pressed without down: a jump, not a drop

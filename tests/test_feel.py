@@ -10,6 +10,8 @@ from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
 from tests.maps import (
     LEDGE,
+    ONE_WAY_SHELF,
+    jump_pressed_before_landing,
     jump_under_the_ceiling_from,
     level_from_ascii,
     settled,
@@ -99,30 +101,12 @@ def test_a_jump_pressed_long_after_leaving_a_ledge_does_not_happen() -> None:
     assert not ticks_after_leaving_ledge_then_jump(TUNING.coyote_ticks + 2)
 
 
-def landing_jump_after_pressing_early(ticks_early: int) -> bool:
-    """Fall onto a floor, pressing jump ``ticks_early`` ticks before landing: jump on landing?"""
-    rows = ["  P        ", "           ", "           ", "           ", "           ",
-            "           ", "###########"]
-    probe = World(level_from_ascii(rows), TUNING)
-    landing_tick = 0
-    while not probe.player.on_ground:
-        probe.step(NOTHING)
-        landing_tick += 1
-    world = World(level_from_ascii(rows), TUNING)
-    press_tick = landing_tick - ticks_early
-    jumped = False
-    for tick in range(landing_tick + 3):
-        held = JUMP if tick >= press_tick else NOTHING
-        jumped |= any(e.kind is EventKind.JUMP for e in world.step(held))
-    return jumped
-
-
 def test_a_jump_pressed_5_ticks_before_landing_happens_on_landing() -> None:
-    assert landing_jump_after_pressing_early(5)
+    assert jump_pressed_before_landing(5)[0]
 
 
 def test_a_jump_pressed_long_before_landing_is_forgotten() -> None:
-    assert not landing_jump_after_pressing_early(TUNING.jump_buffer_ticks + 3)
+    assert not jump_pressed_before_landing(TUNING.jump_buffer_ticks + 3)[0]
 
 
 def rise_under_ceiling_corner(overlap_px: float) -> tuple[World, float]:
@@ -155,17 +139,8 @@ def test_falling_never_exceeds_terminal_velocity() -> None:
     assert max(speeds) == TUNING.max_fall_speed_px_s
 
 
-ONE_WAY = ["          ",
-           "          ",
-           "  P       ",
-           "  ----    ",
-           "          ",
-           "          ",
-           "##########"]
-
-
 def test_down_and_jump_on_a_one_way_platform_drops_through_it() -> None:
-    world = settled(ONE_WAY)
+    world = settled(ONE_WAY_SHELF)
     assert world.player.box.bottom == 3 * 16
     world.step(DOWN_JUMP)
     for _ in range(40):
@@ -174,7 +149,7 @@ def test_down_and_jump_on_a_one_way_platform_drops_through_it() -> None:
 
 
 def test_jump_alone_on_a_one_way_platform_jumps_up() -> None:
-    world = settled(ONE_WAY)
+    world = settled(ONE_WAY_SHELF)
     events = world.step(JUMP)
     assert any(e.kind is EventKind.JUMP for e in events)
     assert world.player.vy < 0
