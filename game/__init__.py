@@ -38,3 +38,24 @@ if _ARGV0 == "-m" or os.path.basename(_ARGV0) == "tile-hopper":
 
 # Keep the console for the game's own words.
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
+
+
+def _import_pygame() -> None:
+    """Import pygame without setuptools' ``pkg_resources``.
+
+    pygame looks up its own files (the default font, the window icon) through
+    ``pkg_resources`` when that imports, which costs about a fifth of a second at every start,
+    and otherwise in its own package folder, as on a Python without setuptools (3.12 and
+    later). The game takes the second way: ``pkg_resources`` is kept out while pygame is
+    imported, and only then.
+    """
+    if "pygame" in sys.modules or "pkg_resources" in sys.modules:
+        return
+    sys.modules["pkg_resources"] = None  # type: ignore[assignment]  # importing it now fails
+    try:
+        import pygame  # noqa: F401
+    finally:
+        del sys.modules["pkg_resources"]
+
+
+_import_pygame()
