@@ -8,9 +8,11 @@ import dataclasses
 import random
 from typing import Any
 
+import pytest
+
 from game.collision.aabb import Box
-from game.levels import LEVELS_DIR, load_level
-from game.levels.enemy_timeline import EnemyTimeline
+from game.levels import LEVELS_DIR, enemy_timeline, load_level
+from game.levels.enemy_timeline import CLOSE_PX, EnemyTimeline
 from game.levels.solver import CHOICES, MOVE_TICKS, Effort, _Search
 from game.sim.inputs import Actions
 from game.sim.level import EnemySpec, Level
@@ -96,21 +98,32 @@ def test_a_respawn_beside_an_enemy_left_out_makes_the_move_again_with_it() -> No
     assert Counting.again > 0
 
 
-def test_a_path_close_to_an_enemy_left_out_is_not_clear() -> None:
+def test_a_path_closer_than_close_px_to_an_enemy_left_out_is_not_clear() -> None:
     world = World(near_the_spawn())
     timeline = EnemyTimeline(world)
-    world.step(frozenset())
-    timeline.write_down(1)
+    for _ in range(30):  # the player and the walker settle on the floor
+        world.step(frozenset())
+    timeline.write_down(30)
     walker = world.enemy_by_number[0]
-    away = [(0, walker)]
-    written = timeline.states[1][0]["box"]
-    world.player.place(Box(written.right + 5, written.y, 12, 14))  # 5 px off
-    world.step(frozenset())
-    assert timeline.clear_of(away, 1)
-    world.player.place(Box(written.right + 0.5, written.y, 12, 14))  # within CLOSE_PX
-    world.player.vx = 0.0
-    world.step(frozenset())
-    assert not timeline.clear_of(away, 1)
+    written = timeline.states[30][0]["box"]
+    standing_y = world.player.box.y
+    timeline.leave_out([(0, walker)])  # as a move does: only its written place is compared
+    for gap_px, clear in ((CLOSE_PX, True), (CLOSE_PX - 0.125, False)):
+        world.player.place(Box(written.right + gap_px, standing_y, 12, 14))
+        world.step(frozenset())  # standing still: the path is where it was placed
+        assert world.player.box.x == written.right + gap_px
+        assert timeline.clear_of([(0, walker)], 30) is clear, gap_px
+
+
+def test_the_states_written_down_stop_at_their_bound(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(enemy_timeline, "MAX_STATES", 3)
+    world = World(near_the_spawn())
+    timeline = EnemyTimeline(world)
+    for tick in range(1, 6):
+        world.step(frozenset())
+        timeline.write_down(tick)
+    assert timeline.written == 3
+    assert sorted(timeline.states) == [1, 2, 3]
 
 
 def test_an_enemy_is_left_out_only_when_written_down_for_the_whole_move() -> None:
