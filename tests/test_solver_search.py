@@ -25,7 +25,7 @@ from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.snapshot import Snapshot
-from game.sim.world import World
+from game.sim.world import EventKind, World
 from tests.maps import level_from_boxes
 from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, SPAWN, WIDTH, exit_on, ferry, gap
 
@@ -142,8 +142,14 @@ def test_a_gap_past_a_running_jump_is_crossed_by_a_jump_on_the_last_coyote_tick(
     world = World(wide)
     for tick, held in enumerate(solution.held):
         if Action.JUMP in held and not world.player.on_ground:
-            # the jump that crossed was pressed in the air: on the last coyote tick
+            # the jump that crossed was pressed in the air: on the last coyote tick, so a
+            # press one tick later is no jump at all
             assert world.player.coyote_ticks_left == LAST_COYOTE_TICK, tick
+            pressed = Snapshot.of(world)
+            assert any(e.kind is EventKind.JUMP for e in world.step(held))
+            pressed.restore(world)
+            world.step(frozenset({Action.RIGHT}))
+            assert not any(e.kind is EventKind.JUMP for e in world.step(held))
             break
         world.step(held)
     else:

@@ -73,9 +73,12 @@ class EnemyTimeline:
     def away(self, start: int, ticks: int) -> list[tuple[int, Enemy]]:
         """The enemies a move of ``ticks`` ticks from tick ``start`` may leave out: in play,
         written down at every tick of the move, and too far from the player to meet it."""
-        rows = [self.states.get(start + tick) for tick in range(1, ticks + 1)]
-        if not all(rows):
-            return []
+        rows: list[dict[int, dict[str, Any]]] = []
+        for tick in range(start + 1, start + ticks + 1):
+            row = self.states.get(tick)
+            if not row:
+                return []  # a tick of the move not written down, or with no enemy in play
+            rows.append(row)
         x, y, w, h = self.world.player.box
         apart_x = self.closing_x_px_per_tick * ticks + AWAY_PX
         apart_y = self.closing_y_px_per_tick * ticks + AWAY_PX
@@ -85,7 +88,7 @@ class EnemyTimeline:
             if (enemy.alive()
                     and (e_x - (x + w) > apart_x or x - (e_x + e_w) > apart_x
                          or e_y - (y + h) > apart_y or y - (e_y + e_h) > apart_y)
-                    and all(number in row for row in rows if row is not None)):
+                    and all(number in row for row in rows)):
                 away.append((number, enemy))
         return away
 
