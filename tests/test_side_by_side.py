@@ -4,6 +4,10 @@ biggest map started first, and never more processes than cores."""
 from __future__ import annotations
 
 import multiprocessing
+import os
+import signal
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -16,6 +20,7 @@ from game.levels.solver import Effort
 from tests.maps import write_tmx
 
 SMALL = Options(effort=Effort(budget=2_000))
+ROOT = Path(__file__).resolve().parent.parent
 
 
 def _folder(tmp_path: Path) -> Path:
@@ -82,3 +87,46 @@ def test_no_more_processes_than_cores(tmp_path: Path, monkeypatch: pytest.Monkey
     monkeypatch.setattr(multiprocessing, "Pool", no_pool)
     paths = sorted(_folder(tmp_path).glob("*.tmx"))
     assert [r.path for r in check_maps(paths, SMALL, jobs=64)] == paths
+
+
+# Ctrl-C at two moments while the pool starts: inside a fork's own clean-up (the signal was
+# lost there), and once the pool's first thread runs (its workers outlived the command).
+_CTRL_C_WHILE_THE_POOL_STARTS = """
+import os, signal, sys, threading
+from game.levels import side_by_side
+from game.levels.__main__ import main
+
+side_by_side.usable_cores = lambda: 2
+moment = sys.argv[2]
+if moment == "fork":
+    os.register_at_fork(after_in_parent=lambda: os.kill(os.getpid(), signal.SIGINT))
+else:
+    real_start = threading.Thread.start
+
+    def start_then_ctrl_c(thread):
+        real_start(thread)
+        threading.Thread.start = real_start
+        os.kill(os.getpid(), signal.SIGINT)
+
+    threading.Thread.start = start_then_ctrl_c
+signal.signal(signal.SIGINT, signal.default_int_handler)
+sys.exit(main(["check", sys.argv[1], "--no-solve", "--jobs", "2"]))
+"""
+
+
+@pytest.mark.skipif(not hasattr(signal, "pthread_sigmask"), reason="workers fork on POSIX")
+@pytest.mark.parametrize("moment", ["fork", "first thread"])
+def test_ctrl_c_while_the_pool_starts_stops_the_command_and_every_worker(
+        tmp_path: Path, moment: str) -> None:
+    """Status 130 and one line, and no worker left running: the command's output closes."""
+    process = subprocess.Popen(
+        [sys.executable, "-c", _CTRL_C_WHILE_THE_POOL_STARTS, str(_folder(tmp_path)), moment],
+        cwd=ROOT, text=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+        start_new_session=True, preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    try:
+        _out, err = process.communicate(timeout=30)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.communicate()
+        pytest.fail("a worker outlived the command and held its output open")
+    assert (process.returncode, err) == (130, "stopped by Ctrl-C\n")

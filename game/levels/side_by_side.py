@@ -13,12 +13,18 @@ used with care:
   its cost), so a long search does not start last and leave a core idle.
 * **In order.** Reports arrive in any order; each is held until every map before it has
   been printed.
-* **One Ctrl-C.** The workers ignore Ctrl-C; the parent stops them all at once.
+* **One Ctrl-C.** The workers ignore Ctrl-C; the parent stops them all at once. While the
+  pool is being built, Ctrl-C is held back (:func:`signal.pthread_sigmask`) and lands the
+  moment the pool is whole. Landing earlier, it was lost inside a fork's own clean-up, or
+  it left a half-built pool whose thread that replaces lost workers went on starting new
+  ones as the command ended: they waited for work for ever, holding its output open.
 """
 
 from __future__ import annotations
 
+import contextlib
 import multiprocessing
+import multiprocessing.pool
 import os
 import signal
 from collections.abc import Iterator
@@ -36,6 +42,25 @@ def usable_cores() -> int:
 
 def _ignore_ctrl_c() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+@contextlib.contextmanager
+def _ctrl_c_held() -> Iterator[None]:
+    """Hold Ctrl-C back for the block, then let one that came meanwhile arrive."""
+    if not hasattr(signal, "pthread_sigmask"):  # Windows: workers are spawned, not forked
+        yield
+        return
+    before = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, before)
+
+
+def _started_pool(jobs: int) -> multiprocessing.pool.Pool:
+    """A pool of ``jobs`` workers that ignore Ctrl-C, all started before Ctrl-C can land."""
+    with _ctrl_c_held():
+        return multiprocessing.Pool(jobs, initializer=_ignore_ctrl_c)
 
 
 def _check(job: tuple[int, Path, Options]) -> tuple[int, MapReport]:
@@ -61,7 +86,7 @@ def check_maps(paths: list[Path], options: Options, jobs: int) -> Iterator[MapRe
     biggest_first = sorted(range(len(paths)), key=lambda index: -_size(paths[index]))
     waiting: dict[int, MapReport] = {}
     printed = 0
-    with multiprocessing.Pool(jobs, initializer=_ignore_ctrl_c) as pool:
+    with _started_pool(jobs) as pool:
         for index, report in pool.imap_unordered(
                 _check, [(index, paths[index], options) for index in biggest_first]):
             waiting[index] = report
