@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from game.levels import LEVELS_DIR, load_level
+from game.levels import LEVELS_DIR, load_level, reach
 from game.levels.__main__ import check, command_name
 from game.levels.__main__ import main as levels_main
 from game.levels.checking import Options, check_map
@@ -232,6 +232,24 @@ def test_the_reach_is_measured_from_the_tuning() -> None:
 def test_the_kept_limits_are_what_the_game_measures() -> None:
     """The highest ledge and the widest gaps the checker and the guide quote, played out."""
     assert measure_limits(Tuning()) == DEFAULT_LIMITS == Limits(44, 68, 76)
+
+
+@pytest.mark.parametrize("foreseen", [(30, 33), (28, 33), (30, 35), (31, 33), (30, 32)])
+def test_the_widest_gaps_foreseen_are_kept_only_when_playing_them_agrees(
+        monkeypatch: pytest.MonkeyPatch, foreseen: tuple[int, int]) -> None:
+    """Played out (here by a stand-in: plain jumps cross up to 30 px, coyote jumps 33), the
+    gaps foreseen are kept after four plays; a wrong one sends every gap to be played."""
+    played: list[int] = []
+
+    def crosses(_tuning: Tuning, gap_px: int) -> tuple[bool, bool]:
+        played.append(gap_px)
+        return gap_px <= 30, gap_px <= 33
+
+    monkeypatch.setattr(reach, "_crosses", crosses)
+    monkeypatch.setattr(reach, "_gaps_foreseen", lambda _tuning: foreseen)
+    limits = reach.measure_limits.__wrapped__(Tuning())
+    assert (limits.gap_px, limits.coyote_gap_px) == (30, 33)
+    assert (len(played) == 4) == (foreseen == (30, 33))
 
 
 def test_the_guide_quotes_the_measured_reach_and_its_pictures_exist() -> None:

@@ -12,10 +12,12 @@ the real :meth:`World.step` with the given tuning.
 
 How far the feet travel is not the widest gap, though: the body is 12 px wide and stands on
 a ledge while any of it is over the ledge, and coyote time lets a jump start a few ticks
-after the feet have left it. So :func:`measure_limits` plays the real thing: a ledge of
-every height and a gap of every width, the jump pressed on every tick near the edge, and
-keeps the highest ledge landed on and the widest gap crossed (plain: jump pressed while on
-the ground; coyote: pressed on any tick, the last coyote tick included).
+after the feet have left it. So :func:`measure_limits` plays the real thing, with the jump
+pressed on every tick near the edge: ledges from the height of a full jump down, until one
+is landed on; and jumps over a pit, where the tick the feet fall past the floor's top tells
+the widest gap each would have crossed, then confirmed by landing across that gap and
+missing one a pixel wider (plain: jump pressed while on the ground; coyote: pressed on any
+tick, the last coyote tick included).
 
 >>> reach = measure_reach(Tuning())
 >>> round(reach.height_px, 1), round(reach.distance_px, 1)
@@ -137,12 +139,20 @@ def _floor(grid: TileGrid, left_px: float, right_px: float, top_px: float) -> No
                                              TileKind.SOLID, col, row))
 
 
+@dataclass(frozen=True)
+class _Attempt:
+    """One jump of :func:`_attempts`."""
+
+    grounded: bool  # on the ground when jump was pressed
+    landed: bool  # came to stand on the target's top, right of its left edge
+    falling_right_px: float | None  # the right edge on the tick the feet fell past that top
+
+
 def _attempts(tuning: Tuning, grid: TileGrid, target_top: float, target_left: float,
-              offset_px: float) -> Iterator[tuple[bool, bool]]:
+              offset_px: float) -> Iterator[_Attempt]:
     """Run right from RUN_COL (plus ``offset_px``) and press jump on each tick worth trying,
-    from a few before the run leaves the ground or meets the wall to the end of coyote time:
-    for each, does the player come to stand at ``target_top`` right of ``target_left``, and
-    was it on the ground when jump was pressed?"""
+    from a few before the run leaves the ground or meets the wall to the end of coyote time,
+    and say how each went."""
     floor_top = LEDGE_ROW * TEST_TILE_PX
     spawn = Box(RUN_COL * TEST_TILE_PX + offset_px, floor_top - tuning.player_height_px,
                 tuning.player_width_px, tuning.player_height_px)
@@ -164,7 +174,7 @@ def _attempts(tuning: Tuning, grid: TileGrid, target_top: float, target_left: fl
         start.restore(world)
         for _ in range(press - first):
             world.step(run)
-        grounded, landed = world.player.on_ground, False
+        grounded, landed, falling_right = world.player.on_ground, False, None
         for tick in range(MAX_AIR_TICKS):
             world.step(jump)
             box = world.player.box
@@ -172,8 +182,9 @@ def _attempts(tuning: Tuning, grid: TileGrid, target_top: float, target_left: fl
                 landed = box.bottom == target_top and box.right > target_left
                 break
             if tick > 0 and world.player.vy > 0 and box.bottom > target_top:
-                break  # falling past the top it meant to land on
-        yield landed, grounded
+                falling_right = box.right  # falling past the top it meant to land on
+                break
+        yield _Attempt(grounded, landed, falling_right)
 
 
 def _crosses(tuning: Tuning, gap_px: int) -> tuple[bool, bool]:
@@ -184,9 +195,9 @@ def _crosses(tuning: Tuning, gap_px: int) -> tuple[bool, bool]:
     _floor(grid, edge + gap_px, grid.width_px, top)
     plain = anyhow = False
     for offset in _offsets(tuning):
-        for landed, grounded in _attempts(tuning, grid, top, edge + gap_px, offset):
-            plain = plain or (landed and grounded)
-            anyhow = anyhow or landed
+        for attempt in _attempts(tuning, grid, top, edge + gap_px, offset):
+            plain = plain or (attempt.landed and attempt.grounded)
+            anyhow = anyhow or attempt.landed
             if plain:
                 return True, True
     return plain, anyhow
@@ -198,7 +209,8 @@ def _climbs(tuning: Tuning, ledge_px: int) -> bool:
     _floor(grid, 0, edge, top)
     _floor(grid, edge, grid.width_px, top - ledge_px)
     return any(landed for offset in _offsets(tuning)
-               for landed, _ in _attempts(tuning, grid, top - ledge_px, edge, offset))
+               for attempt in _attempts(tuning, grid, top - ledge_px, edge, offset)
+               for landed in [attempt.landed])
 
 
 def _offsets(tuning: Tuning) -> list[float]:
@@ -208,15 +220,44 @@ def _offsets(tuning: Tuning) -> list[float]:
     return [quarter / 4 for quarter in range(max(1, math.ceil(step * 4)))]
 
 
+def _gaps_foreseen(tuning: Tuning) -> tuple[int, int]:
+    """The widest gaps (plain, any jump) foreseen from jumps over a pit with no far side.
+
+    The far side's top is the near side's, so a jump meets it only on the tick its feet
+    fall past that top, after that tick's move on x: it lands when its right edge is then
+    past the far side's left edge (a touch is no overlap), and a landing is never a corner
+    slide. So a jump whose right edge is at ``r`` then crosses every gap narrower than
+    ``r - edge``: the widest is ``ceil(r - edge) - 1``."""
+    grid = TileGrid(TEST_COLS // 4, TEST_ROWS, TEST_TILE_PX, TEST_TILE_PX)
+    top, edge = LEDGE_ROW * TEST_TILE_PX, EDGE_COL * TEST_TILE_PX
+    _floor(grid, 0, edge, top)
+    plain = anyhow = 0
+    for offset in _offsets(tuning):
+        for attempt in _attempts(tuning, grid, top, grid.width_px, offset):
+            if attempt.falling_right_px is None:
+                continue
+            widest = math.ceil(attempt.falling_right_px - edge) - 1
+            anyhow = max(anyhow, widest)
+            if attempt.grounded:
+                plain = max(plain, widest)
+    return plain, anyhow
+
+
 @lru_cache(maxsize=16)
 def measure_limits(tuning: Tuning) -> Limits:
     """The highest ledge and the widest gaps, played out in the game's own tick: from the
-    height of a full jump down (and from its length plus the body's width down), the first
-    that the player makes."""
+    height of a full jump down, the first ledge the player lands on; the widest gaps as
+    :func:`_gaps_foreseen` foresees them, each then landed across and missed one pixel
+    wider. Should a check ever disagree, every gap from the length of a full jump plus the
+    body's width down is played instead, and the first crossed is kept."""
     reach = measure_reach(tuning)
     ledge = math.floor(reach.height_px)
     while ledge > 0 and not _climbs(tuning, ledge):
         ledge -= 1
+    plain_gap, coyote_gap = _gaps_foreseen(tuning)
+    if (_crosses(tuning, plain_gap)[0] and not _crosses(tuning, plain_gap + 1)[0]
+            and _crosses(tuning, coyote_gap)[1] and not _crosses(tuning, coyote_gap + 1)[1]):
+        return Limits(ledge, plain_gap, coyote_gap)
     widest = math.ceil(reach.distance_px + tuning.player_width_px
                        + tuning.run_speed_px_s * tuning.tick_s * (tuning.coyote_ticks + 2))
     plain_gap = coyote_gap = 0
