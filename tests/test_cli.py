@@ -177,3 +177,17 @@ def test_the_game_starts_without_setuptools_and_pygame_still_finds_its_own_font(
     kept_out, size = ran.stdout.split(" ", 1)
     assert kept_out == "False"
     assert size.strip() != "(0, 0)"
+
+
+def test_the_game_starts_without_numpy_and_pygame_loads_its_arrays_when_used() -> None:
+    """numpy (installed here for the benchmark) is not imported at start; pygame's surfarray
+    and sndarray load it the first time they are used, by attribute or by import."""
+    pytest.importorskip("numpy")
+    code = ("import sys, game, pygame; started = 'numpy' in sys.modules; "
+            "shape = pygame.surfarray.array3d(pygame.Surface((4, 3))).shape; "
+            "import pygame.sndarray; "
+            "print(started, 'numpy' in sys.modules, shape, callable(pygame.sndarray.array))")
+    ran = subprocess.run([sys.executable, "-c", code], cwd=ROOT, env=ENV, text=True,
+                         capture_output=True, timeout=120, check=False)
+    assert ran.returncode == 0, ran.stderr
+    assert ran.stdout.split() == ["False", "True", "(4,", "3,", "3)", "True"]
