@@ -261,14 +261,14 @@ def test_a_redraw_hands_every_chart_the_rows_measured_and_gives_the_same_targets
         tiny: TinyRun, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     for chart in CHARTS:
         (tmp_path / f"{chart.name}.csv").write_bytes((tiny.out / f"{chart.name}.csv").read_bytes())
-    # Every chart's draw is handed its rows; the peer chart alone is drawn again, since the
+    # Every chart's draw is handed its rows; the smallest chart alone is drawn again, since the
     # run drew every chart from the same rows (as the assert below shows, to six digits).
     handed: dict[str, list[Row]] = {}
 
     def keeping_rows(chart: Chart) -> Chart:
         def draw(rows: list[Row], out: Path, footnote: str) -> Path:
             handed[chart.name] = rows
-            if chart.name == peer.CHART:
+            if chart.name == grid_cells.CHART:
                 return chart.draw(rows, out, footnote)
             return out / f"{chart.name}.png"
         return replace(chart, draw=draw)
@@ -280,7 +280,7 @@ def test_a_redraw_hands_every_chart_the_rows_measured_and_gives_the_same_targets
     assert handed == read_back == as_written
     assert targets.markdown(checked) + "\n" == (tiny.out / "targets.md").read_text(
         encoding="utf-8")
-    assert (tmp_path / "peer.png").read_bytes()[:8] == PNG_MAGIC
+    assert (tmp_path / "grid_cells.png").read_bytes()[:8] == PNG_MAGIC
     assert (tmp_path / "targets.png").read_bytes()[:8] == PNG_MAGIC
 
 
