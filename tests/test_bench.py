@@ -11,9 +11,11 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 from pathlib import Path
+from typing import NamedTuple
 
 import pytest
 
+import game.bench.run as bench_run
 from game.bench import (
     broad,
     caching,
@@ -29,7 +31,7 @@ from game.bench import (
 )
 from game.bench.intervals import Interval, paired_ratio
 from game.bench.records import COLUMNS, Row, read_csv
-from game.bench.run import CHARTS, redraw, run
+from game.bench.run import CHARTS, Chart, redraw, run
 from game.bench.sizes import TINY
 from game.bench.timing import Case, interleaved, percentile
 from game.collision import methods
@@ -44,11 +46,21 @@ COMMITTED = Path(__file__).resolve().parent.parent / "assets" / "charts"
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
 
+class TinyRun(NamedTuple):
+    out: Path                          # where the run wrote its files
+    measured: dict[str, list[Row]]     # the rows it measured, chart by chart
+
+
 @pytest.fixture(scope="module")
-def tiny_run(tmp_path_factory: pytest.TempPathFactory) -> Path:
+def tiny(tmp_path_factory: pytest.TempPathFactory) -> TinyRun:
     out = tmp_path_factory.mktemp("charts")
-    run(TINY, out, echo=lambda line: None)
-    return out
+    measured, _ = run(TINY, out, echo=lambda line: None)
+    return TinyRun(out, measured)
+
+
+@pytest.fixture(scope="module")
+def tiny_run(tiny: TinyRun) -> Path:
+    return tiny.out
 
 
 @pytest.mark.parametrize("chart", [c.name for c in CHARTS])
@@ -98,8 +110,8 @@ def test_the_run_records_no_pair_set_differences(tiny_run: Path) -> None:
     assert differences and all(r.value == 0 for r in differences)
 
 
-def test_the_discrete_miss_rate_is_within_a_point_of_the_formula() -> None:
-    rows = tunnelling.measure(TINY)
+def test_the_discrete_miss_rate_is_within_a_point_of_the_formula(tiny: TinyRun) -> None:
+    rows = tiny.measured[tunnelling.CHART]
     assert tunnelling.worst_gap(rows, tunnelling.DISCRETE, tunnelling.ANALYTIC) <= 1.0
 
 
@@ -126,9 +138,9 @@ def test_the_clamp_never_misses_but_arrives_late() -> None:
 
 
 @pytest.fixture(scope="module")
-def narrow_errors() -> list[Row]:
-    sizes = replace(TINY, narrow_pairs=300, narrow_timed_pairs=1)
-    return [r for r in narrow.measure(sizes) if r.unit != "ns/test"]
+def narrow_errors(tiny: TinyRun) -> list[Row]:
+    assert TINY.narrow_pairs >= 300     # the error rates below come from 300 pairs a family
+    return [r for r in tiny.measured[narrow.CHART] if r.unit != "ns/test"]
 
 
 def test_the_exact_methods_make_no_mistakes_on_their_own_family(
@@ -245,13 +257,31 @@ def test_the_scene_gets_brute_force_below_the_crossover_and_a_grid_from_it() -> 
     assert grid.cell_size_px == methods.GRID_CELL_SIZE_FACTOR * 16
 
 
-def test_a_redraw_from_the_csvs_gives_the_same_targets(tiny_run: Path, tmp_path: Path) -> None:
+def test_a_redraw_hands_every_chart_the_rows_measured_and_gives_the_same_targets(
+        tiny: TinyRun, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     for chart in CHARTS:
-        (tmp_path / f"{chart.name}.csv").write_bytes((tiny_run / f"{chart.name}.csv").read_bytes())
-    _, checked = redraw(TINY, tmp_path, echo=lambda line: None)
-    assert targets.markdown(checked) + "\n" == (tiny_run / "targets.md").read_text(
+        (tmp_path / f"{chart.name}.csv").write_bytes((tiny.out / f"{chart.name}.csv").read_bytes())
+    # Every chart's draw is handed its rows; the smallest chart alone is drawn again, since the
+    # run drew every chart from the same rows (as the assert below shows, to six digits).
+    handed: dict[str, list[Row]] = {}
+
+    def keeping_rows(chart: Chart) -> Chart:
+        def draw(rows: list[Row], out: Path, footnote: str) -> Path:
+            handed[chart.name] = rows
+            if chart.name == grid_cells.CHART:
+                return chart.draw(rows, out, footnote)
+            return out / f"{chart.name}.png"
+        return replace(chart, draw=draw)
+
+    monkeypatch.setattr(bench_run, "CHARTS", tuple(keeping_rows(c) for c in CHARTS))
+    read_back, checked = redraw(TINY, tmp_path, echo=lambda line: None)
+    as_written = {name: [r._replace(value=float(f"{r.value:.6g}")) for r in rows]
+                  for name, rows in tiny.measured.items()}   # the CSVs keep six digits
+    assert handed == read_back == as_written
+    assert targets.markdown(checked) + "\n" == (tiny.out / "targets.md").read_text(
         encoding="utf-8")
-    assert (tmp_path / "peer.png").read_bytes()[:8] == PNG_MAGIC
+    assert (tmp_path / "grid_cells.png").read_bytes()[:8] == PNG_MAGIC
+    assert (tmp_path / "targets.png").read_bytes()[:8] == PNG_MAGIC
 
 
 def test_a_redraw_with_no_csvs_says_so_and_exits_with_status_2(

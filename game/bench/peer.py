@@ -36,6 +36,7 @@ What it teaches: what a move costs and what it gets right, side by side, on the 
 
 from __future__ import annotations
 
+import functools
 import importlib
 from collections.abc import Callable, Sequence
 from pathlib import Path
@@ -240,6 +241,18 @@ def movers(grid: TileGrid, arcade: Any | None) -> dict[str, Mover]:
 def recorded_moves(count: int) -> list[Sample]:
     """Up to ``count`` of the player's moves while The Summit is played to its exit,
     evenly spaced over the play."""
+    samples = played_moves()
+    if len(samples) <= count:
+        return list(samples)
+    return [samples[i * len(samples) // count] for i in range(count)]
+
+
+@functools.cache
+def played_moves() -> tuple[Sample, ...]:
+    """Every move of the player while The Summit is played to its exit by its script.
+
+    The play is the same every time (the tick is deterministic), so it is played once.
+    """
     script = InputScript.load(SCRIPT)
     world = World(load_level(LEVEL))
     last = script.events[-1].tick if script.events else 0
@@ -251,9 +264,7 @@ def recorded_moves(count: int) -> list[Sample]:
             across, down = moves
             b = across.start
             samples.append(Sample(b.x, b.y, b.w, b.h, across.dx, down.dy))
-    if len(samples) <= count:
-        return samples
-    return [samples[i * len(samples) // count] for i in range(count)]
+    return tuple(samples)
 
 
 def agreement(mover: Mover, reference: Mover, moves: Sequence[Sample]) -> int:

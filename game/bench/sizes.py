@@ -69,9 +69,11 @@ QUICK = Sizes(
     peer_moves=300, peer_world_ticks=120,
 )
 
+# The tests' run: every chart at these sizes. Its rows are checked for answers, not times;
+# the narrow phase's error rates there come from 300 pairs of each family.
 TINY = Sizes(
     name="tiny", rounds=2, verdict_rounds=3, min_s=0.0,
-    narrow_pairs=150, narrow_timed_pairs=20,
+    narrow_pairs=300, narrow_timed_pairs=20,
     tunnel_flights=200, tunnel_speeds=(0.25, 1.0, 2.5, 6.0),
     broad_ns=(10, 40, 120), broad_budget_s=0.05, grid_cell_factors=(1.0, 2.0), grid_cell_n=60,
     wall_maps=((20, 6), (80, 12)), wall_queries=10,
