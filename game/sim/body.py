@@ -32,7 +32,9 @@ class BodyMoves(NamedTuple):
         :meth:`crosses`."""
         left, top, right, bottom = self.x.path_edges
         left_y, top_y, right_y, bottom_y = self.y.path_edges
-        return (min(left, left_y), min(top, top_y), max(right, right_y), max(bottom, bottom_y))
+        # Speed, kept: min and max written as comparisons, as in Move.path_edges.
+        return (left_y if left_y < left else left, top_y if top_y < top else top,
+                right_y if right_y > right else right, bottom_y if bottom_y > bottom else bottom)
 
     def crosses(self, region: Box) -> bool:
         """Did this tick's path (the x step, then the y step) overlap ``region``?

