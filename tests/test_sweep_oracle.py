@@ -16,6 +16,7 @@ fraction of a pixel to many tiles in one tick.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
 
 import pytest
 from hypothesis import event, given, settings
@@ -49,6 +50,7 @@ class Scene:
         return grid
 
 
+@cache  # each strategy is built and checked once, not again at every draw
 def halves(low: float, high: float) -> st.SearchStrategy[float]:
     return st.integers(int(low / STEP), int(high / STEP)).map(lambda n: n * STEP)
 
