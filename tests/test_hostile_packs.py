@@ -301,8 +301,8 @@ PLATFORM = ('<properties><property name="width" type="float" value="4096"/>'
 
 
 @pytest.mark.parametrize(("kind", "count", "size", "extra", "said"), [
-    ("Coin", 19_990, 512, "", "19,990 Coins"),
-    ("Enemy", 19_990, 16, "", "19,990 Enemies"),
+    ("Coin", budget.MAX_COINS + 1, 512, "", f"{budget.MAX_COINS + 1:,} Coins"),
+    ("Enemy", budget.MAX_ENEMIES + 1, 16, "", f"{budget.MAX_ENEMIES + 1:,} Enemies"),
     ("Coin", 200, 4096, "", "pixels in all"),
     ("Platform", 200, 16, PLATFORM, "pixels in all"),
 ])
