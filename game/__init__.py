@@ -41,21 +41,26 @@ os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 
 
 def _import_pygame() -> None:
-    """Import pygame without setuptools' ``pkg_resources``.
+    """Import pygame without setuptools' ``pkg_resources`` and without numpy.
 
     pygame looks up its own files (the default font, the window icon) through
     ``pkg_resources`` when that imports, which costs about a fifth of a second at every start,
     and otherwise in its own package folder, as on a Python without setuptools (3.12 and
-    later). The game takes the second way: ``pkg_resources`` is kept out while pygame is
-    imported, and only then.
+    later). Wherever numpy is installed, pygame also imports it for ``pygame.surfarray`` and
+    ``pygame.sndarray``, which the game never uses: another fifth of a second. The game
+    takes pygame as it is without either: both are kept out while pygame is imported, and
+    only then (the bench imports numpy later, as usual).
     """
-    if "pygame" in sys.modules or "pkg_resources" in sys.modules:
+    if "pygame" in sys.modules:
         return
-    sys.modules["pkg_resources"] = None  # type: ignore[assignment]  # importing it now fails
+    kept_out = [name for name in ("pkg_resources", "numpy") if name not in sys.modules]
+    for name in kept_out:
+        sys.modules[name] = None  # type: ignore[assignment]  # importing it now fails
     try:
         import pygame  # noqa: F401
     finally:
-        del sys.modules["pkg_resources"]
+        for name in kept_out:
+            del sys.modules[name]
 
 
 _import_pygame()
