@@ -53,14 +53,18 @@ def _holds_project_folders(folder: Path) -> bool:
 
 @dataclass(frozen=True)
 class Sandbox:
-    """The folders one level's files must lie in, each a real (resolved) path."""
+    """The folders one level's files must lie in, each made a real (resolved) path once,
+    when the sandbox is made: every file the level names is then checked against them."""
 
     roots: tuple[Path, ...]
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "roots", tuple(real(root) for root in self.roots))
 
     def allows(self, path: Path) -> bool:
         """True when ``path``, resolved, lies in one of the roots or below it."""
         target = real(path)
-        return any(target.is_relative_to(real(root)) for root in self.roots)
+        return any(target.is_relative_to(root) for root in self.roots)
 
     def describe(self) -> str:
         """The allowed folders, for a message."""
