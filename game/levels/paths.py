@@ -59,7 +59,8 @@ class Sandbox:
     roots: tuple[Path, ...]
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "roots", tuple(real(root) for root in self.roots))
+        resolved = dict.fromkeys(real(root) for root in self.roots)  # in order, each once
+        object.__setattr__(self, "roots", tuple(resolved))
 
     def allows(self, path: Path) -> bool:
         """True when ``path``, resolved, lies in one of the roots or below it."""
@@ -92,11 +93,10 @@ def sandbox_for(map_path: Path, folder: Path | None = None) -> Sandbox:
     """The sandbox of the map at ``map_path``: its folder and its project's ``levels/`` and
     ``assets/``; or, when ``folder`` is given, that folder alone."""
     if folder is not None:
-        return Sandbox((real(folder),))
-    own = real(Path(os.path.abspath(map_path)).parent)
+        return Sandbox((folder,))
     project = project_root(map_path)
-    shared = tuple(real(project / name) for name in PROJECT_FOLDERS) if project else ()
-    return Sandbox((own, *(root for root in shared if root != own)))
+    shared = tuple(project / name for name in PROJECT_FOLDERS) if project else ()
+    return Sandbox((Path(os.path.abspath(map_path)).parent, *shared))
 
 
 def check_map_file(map_path: Path, sandbox: Sandbox, findings: Findings) -> None:
