@@ -47,7 +47,7 @@ def _import_pygame() -> None:
     ``pkg_resources`` when that imports, which costs about a fifth of a second at every start,
     and otherwise in its own package folder, as on a Python without setuptools (3.12 and
     later). Wherever numpy is installed, pygame also imports it for ``pygame.surfarray`` and
-    ``pygame.sndarray``, which the game never uses: another fifth of a second. The game
+    ``pygame.sndarray``, which the game never uses: about a sixth of a second more. The game
     takes pygame as it is without either: both are kept out while pygame is imported, and
     only then (the bench imports numpy later, as usual).
     """
