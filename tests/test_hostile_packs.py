@@ -24,6 +24,7 @@ import pytest
 
 from game.app import cli
 from game.app.watch import FileWatcher, level_files
+from game.collision.tile_grid import TileGrid, TileShape
 from game.levels import LevelError, budget, check_level, errors, layers, load_level
 from game.levels.__main__ import main as levels_main
 from game.levels.images import header_size
@@ -271,7 +272,7 @@ def test_forty_collision_rectangles_on_one_tile_are_refused_before_any_is_placed
 
 
 def test_the_collision_shapes_of_a_whole_map_are_counted_before_they_are_made(
-        tmp_path: Path) -> None:
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     rects = "".join(f'<object id="{i}" x="{i}" y="0" width="1" height="1"/>'
                     for i in range(budget.MAX_SHAPES_PER_TILE))
     tileset = ('<tileset firstgid="1" name="t" tilewidth="16" tileheight="16" tilecount="1" '
@@ -279,7 +280,10 @@ def test_the_collision_shapes_of_a_whole_map_are_counted_before_they_are_made(
                '</tile></tileset>')
     cells = budget.MAX_SHAPES // budget.MAX_SHAPES_PER_TILE + 1
     level = big_map(tmp_path, cells, 3, tileset=tileset)
+    made: list[TileShape] = []
+    monkeypatch.setattr(TileGrid, "put", lambda _grid, _col, _row, shape: made.append(shape))
     assert f"more than {budget.MAX_SHAPES:,} collision shapes" in refusal(level)
+    assert made == []  # not one of them was made
 
 
 def objects_of(kind: str, count: int, size: int, extra: str = "") -> str:
@@ -297,8 +301,8 @@ PLATFORM = ('<properties><property name="width" type="float" value="4096"/>'
 
 
 @pytest.mark.parametrize(("kind", "count", "size", "extra", "said"), [
-    ("Coin", 19_990, 512, "", "19,990 Coins"),
-    ("Enemy", 19_990, 16, "", "19,990 Enemies"),
+    ("Coin", budget.MAX_COINS + 1, 512, "", f"{budget.MAX_COINS + 1:,} Coins"),
+    ("Enemy", budget.MAX_ENEMIES + 1, 16, "", f"{budget.MAX_ENEMIES + 1:,} Enemies"),
     ("Coin", 200, 4096, "", "pixels in all"),
     ("Platform", 200, 16, PLATFORM, "pixels in all"),
 ])

@@ -53,14 +53,19 @@ def _holds_project_folders(folder: Path) -> bool:
 
 @dataclass(frozen=True)
 class Sandbox:
-    """The folders one level's files must lie in, each a real (resolved) path."""
+    """The folders one level's files must lie in, each made a real (resolved) path once,
+    when the sandbox is made: every file the level names is then checked against them."""
 
     roots: tuple[Path, ...]
+
+    def __post_init__(self) -> None:
+        resolved = dict.fromkeys(real(root) for root in self.roots)  # in order, each once
+        object.__setattr__(self, "roots", tuple(resolved))
 
     def allows(self, path: Path) -> bool:
         """True when ``path``, resolved, lies in one of the roots or below it."""
         target = real(path)
-        return any(target.is_relative_to(real(root)) for root in self.roots)
+        return any(target.is_relative_to(root) for root in self.roots)
 
     def describe(self) -> str:
         """The allowed folders, for a message."""
@@ -88,11 +93,10 @@ def sandbox_for(map_path: Path, folder: Path | None = None) -> Sandbox:
     """The sandbox of the map at ``map_path``: its folder and its project's ``levels/`` and
     ``assets/``; or, when ``folder`` is given, that folder alone."""
     if folder is not None:
-        return Sandbox((real(folder),))
-    own = real(Path(os.path.abspath(map_path)).parent)
+        return Sandbox((folder,))
     project = project_root(map_path)
-    shared = tuple(real(project / name) for name in PROJECT_FOLDERS) if project else ()
-    return Sandbox((own, *(root for root in shared if root != own)))
+    shared = tuple(project / name for name in PROJECT_FOLDERS) if project else ()
+    return Sandbox((Path(os.path.abspath(map_path)).parent, *shared))
 
 
 def check_map_file(map_path: Path, sandbox: Sandbox, findings: Findings) -> None:

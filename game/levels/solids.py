@@ -20,6 +20,7 @@ Box(x=0, y=0, w=16, h=4)
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Sequence
 
 from game.collision.aabb import Box
@@ -81,35 +82,46 @@ def _shapes_of(raw: int, tilesets: Tilesets, header: MapHeader) -> Offsets | Non
 
 def build_grid(header: MapHeader, layers: Sequence[tuple[LayerNode, Sequence[int]]],
                tilesets: Tilesets, findings: Findings) -> TileGrid:
-    """The collision grid of all tile layers; a GID no tileset owns is an error."""
-    grid = TileGrid(header.cols, header.rows, header.tile_w, header.tile_h)
+    """The collision grid of all tile layers; a GID no tileset owns is an error.
+
+    Every shape is counted, layer by layer, before the first one is made: a map past the
+    budget is refused having made none. Counting goes by tile id, not by cell: a layer holds
+    few different ids, and each id's shapes are worked out once."""
     cache: dict[int, Offsets | None] = {}
-    made = 0  # shapes put in the grid so far: counted before each is made
+    made = 0  # shapes the layers counted so far will make
     for layer, gids in layers:
-        unknown: list[int] = []
-        for index, raw in enumerate(gids):
-            if not raw:
-                continue
+        uses = Counter(gids)
+        uses.pop(0, None)  # 0 is an empty cell
+        unknown: set[int] = set()
+        for raw, count in uses.items():
             if raw not in cache:
                 cache[raw] = _shapes_of(raw, tilesets, header)
             shapes = cache[raw]
             if shapes is None:
-                unknown.append(index)
+                unknown.add(raw)
+            else:
+                made += count * len(shapes)
+        if made > MAX_SHAPES:
+            findings.fail(layer.place, f"the map's tiles make more than {MAX_SHAPES:,} "
+                          "collision shapes, the most the game builds for one map",
+                          f"{FIX_SHAPES}, or paint fewer colliding tiles")
+        if unknown:
+            first = next(index for index, raw in enumerate(gids) if raw in unknown)
+            row, col = divmod(first, header.cols)
+            cells = sum(uses[raw] for raw in unknown)
+            more = f" ({cells} cells in all)" if cells > 1 else ""
+            findings.error(f"tile ({col},{row}) in {layer.place}",
+                           f"tile id {split(gids[first])[0]} is in none of the map's "
+                           f"tilesets{more}",
+                           "erase those tiles, or add back the tileset they came from")
+    grid = TileGrid(header.cols, header.rows, header.tile_w, header.tile_h)
+    for _layer, gids in layers:
+        for index, raw in enumerate(gids):
+            shapes = cache[raw] if raw else None
+            if not shapes:  # an empty cell, a tile that does not collide, or an unknown id
                 continue
             row, col = divmod(index, header.cols)
-            made += len(shapes)
-            if made > MAX_SHAPES:
-                findings.fail(layer.place, f"the map's tiles make more than {MAX_SHAPES:,} "
-                              "collision shapes, the most the game builds for one map",
-                              f"{FIX_SHAPES}, or paint fewer colliding tiles")
             left, top = col * header.tile_w, row * header.tile_h
             for kind, (x, y, w, h) in shapes:
                 grid.put(col, row, TileShape(Box(left + x, top + y, w, h), kind, col, row))
-        if unknown:
-            row, col = divmod(unknown[0], header.cols)
-            more = f" ({len(unknown)} cells in all)" if len(unknown) > 1 else ""
-            findings.error(f"tile ({col},{row}) in {layer.place}",
-                           f"tile id {split(gids[unknown[0]])[0]} is in none of the map's "
-                           f"tilesets{more}",
-                           "erase those tiles, or add back the tileset they came from")
     return grid
