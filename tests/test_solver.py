@@ -217,6 +217,21 @@ def test_solve_says_how_far_it_got_when_the_exit_is_walled_in(tmp_path: Path) ->
     assert not (tmp_path / "none.txt").exists()
 
 
+@pytest.mark.parametrize("option", ["--out", "--picture"])
+def test_solve_says_an_output_cannot_be_written_before_it_searches(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch, option: str) -> None:
+    def no_search(*_: object) -> None:
+        raise AssertionError("searched for a route that could not be written")
+
+    monkeypatch.setattr("game.levels.__main__.judge", no_search)
+    for target, reason in ((tmp_path / "missing" / "route.txt", "its folder does not exist"),
+                           (tmp_path, "it is a folder")):
+        result = call_main(levels_main, ["solve", FIRST, option, target], cwd=ROOT)
+        assert result.returncode == 1
+        assert result.stderr.startswith(f"{target}: the ") and reason in result.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_a_search_out_of_time_gives_up_and_says_so() -> None:
     solution = solve(load_level(FIRST), Effort(seconds=0.01))
     assert not solution.found and solution.timed_out

@@ -49,7 +49,7 @@ import pygame
 from game.levels.checking import Finding, MapReport, Options
 from game.levels.errors import LevelError, escaped
 from game.levels.loader import load_level
-from game.levels.outputs import image_suffix, write_output, write_surface
+from game.levels.outputs import image_suffix, unwritable, write_output, write_surface
 from game.levels.reach import limits_of, measure_limits, measure_reach
 from game.levels.route_picture import draw_route
 from game.levels.shipped import LEVELS_DIR
@@ -157,7 +157,13 @@ def _refused(path: Path, text: str) -> Finding:
 
 def solve_command(path: Path, out: Path | None, picture: Path | None, effort: Effort,
                   command: str) -> int:
-    """``solve``: judge the map, write the script and the picture; return the exit status."""
+    """``solve``: judge the map, write the script and the picture; return the exit status.
+    An output that plainly cannot be written is said before the search, not after it."""
+    for output, what in ((out, "the script"), (picture, "the picture")):
+        problem = unwritable(output, what) if output is not None else None
+        if problem is not None:
+            print(problem, file=sys.stderr)
+            return EXIT_BAD
     try:
         level = load_level(path, images=picture is not None)
     except LevelError as error:

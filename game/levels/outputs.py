@@ -96,6 +96,32 @@ def replace_atomically(path: Path, write: Callable[[Path], object],
         raise
 
 
+def _named(path: Path) -> str:
+    return os.fsdecode(path).encode("utf-8", "backslashreplace").decode("utf-8")
+
+
+def unwritable(path: Path, what: str) -> str | None:
+    """The sentence to print if ``what`` plainly cannot be written at ``path`` (its folder
+    is missing, or is not one we may write in, or the path is a folder), else None.
+
+    Asked before a long search, so a mistyped path costs nothing; a write can still fail
+    later (a full disk, a name too long), which :func:`write_output` reports.
+    """
+    folder = Path(os.path.abspath(path)).parent
+    try:
+        if not folder.is_dir():
+            reason = "its folder does not exist"
+        elif not os.access(folder, os.W_OK | os.X_OK):
+            reason = "its folder may not be written to"
+        elif path.is_dir():
+            reason = "it is a folder"
+        else:
+            return None
+    except (OSError, ValueError):
+        return None  # a name the system refuses: the write will say so
+    return f"{_named(path)}: {what} cannot be written ({reason}) — check the path"
+
+
 def write_output(path: Path, write: Callable[[Path], object], what: str,
                  suffix: str | None = None) -> str | None:
     """Write ``path`` atomically; the sentence to print if it could not be, else None."""
@@ -105,6 +131,5 @@ def write_output(path: Path, write: Callable[[Path], object], what: str,
         reason = (error.strerror if isinstance(error, OSError) else None) or str(error)
         fix = ("free some space" if isinstance(error, OSError) and error.errno in DISK_FULL
                else "check the path")
-        name = os.fsdecode(path).encode("utf-8", "backslashreplace").decode("utf-8")
-        return f"{name}: {what} cannot be written ({reason}) — {fix}"
+        return f"{_named(path)}: {what} cannot be written ({reason}) — {fix}"
     return None
