@@ -6,16 +6,18 @@ are only read in place. A fresh clone does not have them, so these tests skip.
 
 Each map is loaded twice: with the game's folder rule (most of them use files in sibling
 folders, which the rule refuses) and with the rule widened to the map's source repository,
-so that the loader reads everything else about them too.
+so that the loader reads everything else about them too. A map the tests below name again
+is not read again: its outcome is kept.
 """
 
 from __future__ import annotations
 
+import functools
 from pathlib import Path
 
 import pytest
 
-from game.levels import LevelError, check_level, load_level
+from game.levels import Findings, LevelError, check_level, load_level
 from tests.hang_guard import hang_guard
 
 CORPUS = Path(__file__).resolve().parent.parent.parent / "shared" / "third_party_maps"
@@ -28,6 +30,14 @@ def repository(path: Path) -> Path:
     return CORPUS / path.relative_to(CORPUS).parts[0]
 
 
+@functools.cache  # the maps are only read: a second look would see the same
+def checked(path: Path, folder: Path | None) -> Findings:
+    """What the checker says of the map."""
+    with hang_guard():
+        return check_level(path, folder=folder)
+
+
+@functools.cache
 def outcome(path: Path, folder: Path | None) -> str:
     """'loaded', or the refusal's message; any other exception fails the test."""
     with hang_guard():
@@ -37,7 +47,7 @@ def outcome(path: Path, folder: Path | None) -> str:
         except LevelError as error:
             assert str(error).startswith(f"{path}: ") and " — " in str(error)
             result = str(error)
-        findings = check_level(path, folder=folder)
+    findings = checked(path, folder)
     assert all(line.startswith(f"{path}: ") for line in findings.lines())
     assert (result == "loaded") == (not findings.errors) or "image" in str(findings.errors)
     return result
@@ -85,4 +95,4 @@ def test_a_map_whose_image_is_missing_is_reported_by_the_checker_only() -> None:
     path = CORPUS / "mapeditor-tiled/util/java/libtiled-java/src/test/resources/" \
                     "desert_missing_image/desert.tmx"
     assert "no Player object" in outcome(path, folder=None)  # headless: images not needed
-    assert any("is missing" in str(error) for error in check_level(path).errors)
+    assert any("is missing" in str(error) for error in checked(path, None).errors)

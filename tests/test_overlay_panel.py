@@ -4,7 +4,9 @@ player drawn above the outlines."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+import functools
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
 from pathlib import Path
 
 import pygame
@@ -53,23 +55,72 @@ def played(level: str, assets: Assets) -> Iterator[tuple[pygame.Surface, Campaig
             yield frame, campaign
 
 
+@dataclass(frozen=True)
+class Shot:
+    """One frame of a play with the overlay drawn on it, once for each test below."""
+
+    ticks: int
+    panel: pygame.Rect  # where the default panel went, with the window's stepping lines
+    hitbox: pygame.Rect  # the player's hitbox on the screen
+    hidden: tuple[tuple[int, int], ...]  # pixels of the player's picture the overlay hid
+    checked: int  # pixels of the player's picture looked at
+    player_at: tuple[int, int]  # where the panel thinks the player is
+
+
+def shots(level: str, assets: Assets) -> list[Shot]:
+    """Every few ticks of ``level``'s play: the overlay drawn as the window draws it (with
+    its stepping lines) on one copy of the frame, and as a picture draws it on another; the
+    second is read back for the player's picture, pixel by pixel."""
+    seen = []
+    for frame, campaign in played(level, assets):
+        world = campaign.world
+        player = world.player
+        offset = screen_offset(world.camera)
+        panel = draw_debug(frame.copy(), world, assets, fps=59.5, update_ms=1.25,
+                           extra_lines=("frozen at tick 1234", "F2 freeze F3 step F4 slow"))
+        draw_debug(frame, world, assets, fps=60.0, update_ms=0.0)
+        picture = player.rect.move(-offset[0], -offset[1])
+        outlines = [thing.box.to_rect().move(-offset[0], -offset[1])
+                    for thing in (*world.bodies(), *world.coins, *world.exits,
+                                  *world.checkpoints, *world.platforms)]
+        hidden = []
+        checked = 0
+        for x in range(picture.w):
+            for y in range(picture.h):
+                spot = (picture.x + x, picture.y + y)
+                if player.image.get_at((x, y)).a < 255 or not frame.get_rect().collidepoint(spot):
+                    continue
+                on_outline = any(box.collidepoint(spot) and (
+                    spot[0] in (box.left, box.right - 1) or spot[1] in (box.top, box.bottom - 1))
+                    for box in outlines)
+                if frame.get_at(spot) != player.image.get_at((x, y)) and not on_outline:
+                    hidden.append(spot)
+                checked += 1
+        seen.append(Shot(campaign.ticks, panel, player.box.to_rect().move(*(-v for v in offset)),
+                         tuple(hidden), checked, player_on_screen(world)))
+    return seen
+
+
+@pytest.fixture(scope="module")
+def shots_of(assets: Assets) -> Callable[[str], list[Shot]]:
+    """:func:`shots` of a level, made once for both tests that read them."""
+    return functools.cache(lambda level: shots(level, assets))
+
+
 @pytest.mark.parametrize("level", LEVELS)
 def test_the_default_panel_covers_at_most_15_percent_of_a_1920x1080_window_and_not_the_player(
-        assets: Assets, level: str) -> None:
+        shots_of: Callable[[str], list[Shot]], level: str) -> None:
     scale = window_scale(DESKTOP)
     assert scale == 5  # a 1600x900 window
     view = pygame.Rect(0, 0, VIEW_W_PX * scale, VIEW_H_PX * scale)
     checked = 0
-    for frame, campaign in played(level, assets):
-        world = campaign.world
-        panel = draw_debug(frame, world, assets, fps=59.5, update_ms=1.25,
-                           extra_lines=("frozen at tick 1234", "F2 freeze F3 step F4 slow"))
+    for shot in shots_of(level):
+        panel = shot.panel
         on_window = pygame.Rect(panel.x * scale, panel.y * scale, panel.w * scale,
                                 panel.h * scale)
         assert view.contains(on_window)
         assert on_window.w * on_window.h <= MOST_COVERED * view.w * view.h, on_window
-        hitbox = world.player.box.to_rect().move(*(-v for v in screen_offset(world.camera)))
-        assert not panel.colliderect(hitbox), (level, campaign.ticks, panel, hitbox)
+        assert not panel.colliderect(shot.hitbox), (level, shot.ticks, panel, shot.hitbox)
         checked += 1
     assert checked >= 5
 
@@ -120,33 +171,12 @@ def test_f5_cycles_compact_full_hidden_and_the_full_panel_keys_every_colour(
 
 @pytest.mark.parametrize("level", LEVELS)
 def test_the_player_is_drawn_above_the_outlines_only_the_hitboxes_cross_him(
-        assets: Assets, level: str) -> None:
+        shots_of: Callable[[str], list[Shot]], level: str) -> None:
     """Every opaque pixel of the player's picture shows on top of the overlay, even where a
     bush of the foreground hid it, except where a hitbox's 1 px outline crosses it."""
-    checked = 0
-    for frame, campaign in played(level, assets):
-        world = campaign.world
-        player = world.player
-        offset = screen_offset(world.camera)
-        draw_debug(frame, world, assets, fps=60.0, update_ms=0.0)
-        picture = player.rect.move(-offset[0], -offset[1])
-        outlines = [thing.box.to_rect().move(-offset[0], -offset[1])
-                    for thing in (*world.bodies(), *world.coins, *world.exits,
-                                  *world.checkpoints, *world.platforms)]
-        hidden = []
-        for x in range(picture.w):
-            for y in range(picture.h):
-                spot = (picture.x + x, picture.y + y)
-                if player.image.get_at((x, y)).a < 255 or not frame.get_rect().collidepoint(spot):
-                    continue
-                on_outline = any(box.collidepoint(spot) and (
-                    spot[0] in (box.left, box.right - 1) or spot[1] in (box.top, box.bottom - 1))
-                    for box in outlines)
-                if frame.get_at(spot) != player.image.get_at((x, y)) and not on_outline:
-                    hidden.append(spot)
-                checked += 1
-        assert hidden == [], (level, campaign.ticks, player_on_screen(world))
-    assert checked > 0
+    for shot in shots_of(level):
+        assert shot.hidden == (), (level, shot.ticks, shot.player_at)
+    assert sum(shot.checked for shot in shots_of(level)) > 0
 
 
 def test_the_readme_gives_the_compact_panels_size_as_measured(assets: Assets) -> None:

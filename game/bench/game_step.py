@@ -86,12 +86,14 @@ def levels_by_size() -> list[Path]:
     return sorted(LEVELS_DIR.glob("*.tmx"), key=tiles, reverse=True)
 
 
-def level_to_play() -> tuple[Path, Path]:
+def level_to_play(by_size: Sequence[Path] | None = None) -> tuple[Path, Path]:
     """The largest shipped level that has a winning script, and that script.
 
     A level added without its script yet is passed over (and the target says so).
+    ``by_size`` is :func:`levels_by_size` when the caller has it already (each level is
+    loaded to be measured).
     """
-    for level in levels_by_size():
+    for level in levels_by_size() if by_size is None else by_size:
         script = SCRIPTS_DIR / f"{level.stem}.txt"
         if script.exists():
             return level, script
@@ -193,8 +195,9 @@ def compare(levels: dict[str, Level], ticks: int, rounds: int) -> dict[str, list
 
 
 def measure(sizes: Sizes) -> list[Row]:
-    level, script = level_to_play()
-    largest = levels_by_size()[0]
+    by_size = levels_by_size()
+    level, script = level_to_play(by_size)
+    largest = by_size[0]
     played = level.name
     rows = [Row(CHART, f"largest level: {largest.name}", "is played", 0,
                 float(level == largest), "1 = yes, 0 = it has no script yet")]

@@ -163,9 +163,15 @@ class CrateScene:
             a.velocity_px_s, b.velocity_px_s = after_a.velocity_px_s, after_b.velocity_px_s
             crate_hits += 1
 
-        # 4. Walls: static bodies; push out and bounce.
+        # 4. Walls: static bodies; push out and bounce. A crate clear of the walls' inner
+        #    faces cannot overlap one (the same comparisons Box.overlaps makes): skip it.
         wall_hits = 0
+        left, right, top, bottom = self.walls
+        inner_left, inner_top = left.x + left.w, top.y + top.h
         for crate in self.crates.values():
+            x, y, w, h = crate.box
+            if inner_left <= x and x + w <= right.x and inner_top <= y and y + h <= bottom.y:
+                continue
             for wall in self.walls:
                 push = push_out(crate.box, wall)
                 if push is None:

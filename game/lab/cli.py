@@ -3,8 +3,8 @@
 Where it sits: the entry point of the lab. With no option it opens a window with the list
 of scenes; ``--scene NAME`` opens that scene; ``--list`` prints the scene names, one a line
 (on a terminal, or with ``--long``, each name is followed by its group and what it shows);
-``--screenshot PNG`` draws ``--frames`` frames (default 1) without any window and saves the
-last one. Exit status: 0 done, 1 the picture could not be saved or no display for the
+``--screenshot PNG`` runs ``--frames`` frames (default 1) without any window and saves a
+picture of the last one. Exit status: 0 done, 1 the picture could not be saved or no display for the
 window (one sentence naming ``--screenshot`` and ``--list``), 2 bad usage (an unknown scene
 name prints the list on stderr).
 
@@ -55,7 +55,7 @@ def main(argv: list[str] | None = None) -> int:
                         help="draw without a window and save the last frame here")
     parser.add_argument("--frames", metavar="N", default=1,
                         type=whole_number(1, MAX_FRAMES, "frames"),
-                        help="frames to draw before the screenshot (default 1)")
+                        help="frames to run; the screenshot shows the last (default 1)")
     args = parser.parse_args(argv)
     names = scene_names()
     if args.list:
@@ -93,7 +93,10 @@ def _start_pygame(headless: bool) -> None:
 
 
 def screenshot(scene: str | None, path: Path, frames: int) -> int:
-    """Draw ``frames`` frames of ``scene`` (or the list) headless; save the last as PNG."""
+    """Run ``frames`` frames of ``scene`` (or the list) headless; save the last as PNG.
+
+    Only the last frame is drawn: drawing reads the scene and changes none of it, so the
+    frames before it would only be painted over."""
     _start_pygame(headless=True)
     import pygame
 
@@ -104,7 +107,7 @@ def screenshot(scene: str | None, path: Path, frames: int) -> int:
     surface = screen()
     for _ in range(frames):
         bed.frame()
-        bed.draw(surface)
+    bed.draw(surface)
     if not path.parent.is_dir():
         print(f"python -m game.lab: cannot save the screenshot {shown(path)}: its folder does "
               "not exist", file=sys.stderr)
