@@ -4,9 +4,9 @@ Where it sits: the entry point of the lab. With no option it opens a window with
 of scenes; ``--scene NAME`` opens that scene; ``--list`` prints the scene names, one a line
 (on a terminal, or with ``--long``, each name is followed by its group and what it shows);
 ``--screenshot PNG`` runs ``--frames`` frames (default 1) without any window and saves a
-picture of the last one. Exit status: 0 done, 1 the picture could not be saved or no display for the
-window (one sentence naming ``--screenshot`` and ``--list``), 2 bad usage (an unknown scene
-name prints the list on stderr).
+picture of the last one. Exit status: 0 done, 1 the picture could not be saved or no
+display for the window (one sentence naming ``--screenshot`` and ``--list``), 2 bad usage
+(an unknown scene name prints the list on stderr).
 
 What it teaches: a headless mode is the same loop with the window taken away. The
 screenshot runs the very frames a window would, with ``SDL_VIDEODRIVER=dummy``, so a test or
