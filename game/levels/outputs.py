@@ -26,6 +26,8 @@ from pathlib import Path
 
 import pygame
 
+from game.levels.errors import escaped
+
 MAX_TEMPORARY_STEM_CHARS = 100  # far below the 255 bytes a name may take
 IMAGE_SUFFIXES = (".png", ".bmp", ".tga", ".jpg", ".jpeg")  # what pygame writes by name
 DISK_FULL = (errno.ENOSPC, errno.EFBIG, errno.EDQUOT)
@@ -97,7 +99,8 @@ def replace_atomically(path: Path, write: Callable[[Path], object],
 
 
 def _named(path: Path) -> str:
-    return os.fsdecode(path).encode("utf-8", "backslashreplace").decode("utf-8")
+    """``path`` as printed: any byte or character that could forge output, escaped."""
+    return escaped(os.fsdecode(path))
 
 
 def unwritable(path: Path, what: str) -> str | None:
@@ -105,7 +108,9 @@ def unwritable(path: Path, what: str) -> str | None:
     is missing, or is not one we may write in, or the path is a folder), else None.
 
     Asked before a long search, so a mistyped path costs nothing; a write can still fail
-    later (a full disk, a name too long), which :func:`write_output` reports.
+    later (a full disk, a name too long), which :func:`write_output` reports. Unlike the
+    game's own outputs (:func:`game.app.files.output_problem`), a missing folder is a
+    problem here: the level tools make no folders, so a failed write leaves nothing behind.
     """
     folder = Path(os.path.abspath(path)).parent
     try:

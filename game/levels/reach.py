@@ -208,9 +208,8 @@ def _climbs(tuning: Tuning, ledge_px: int) -> bool:
     top, edge = LEDGE_ROW * TEST_TILE_PX, EDGE_COL * TEST_TILE_PX
     _floor(grid, 0, edge, top)
     _floor(grid, edge, grid.width_px, top - ledge_px)
-    return any(landed for offset in _offsets(tuning)
-               for attempt in _attempts(tuning, grid, top - ledge_px, edge, offset)
-               for landed in [attempt.landed])
+    return any(attempt.landed for offset in _offsets(tuning)
+               for attempt in _attempts(tuning, grid, top - ledge_px, edge, offset))
 
 
 def _offsets(tuning: Tuning) -> list[float]:
