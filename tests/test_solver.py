@@ -245,8 +245,10 @@ def test_the_reach_is_measured_from_the_tuning() -> None:
 
 
 def test_the_kept_limits_are_what_the_game_measures() -> None:
-    """The highest ledge and the widest gaps the checker and the guide quote, played out."""
+    """The highest ledge and the widest gaps the checker and the guide quote, played out;
+    the gaps as foreseen, before any is played, are already these."""
     assert measure_limits(Tuning()) == DEFAULT_LIMITS == Limits(44, 68, 76)
+    assert reach._gaps_foreseen(Tuning()) == (68, 76)
 
 
 @pytest.mark.parametrize("foreseen", [(30, 33), (28, 33), (30, 35), (31, 33), (30, 32)])
