@@ -22,13 +22,13 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from game.app import cli, files
+from game.app import cli
 from game.app.hud import ELLIPSIS, fit_text
 from game.app.saves import JsonFile, Progress
 from game.app.settings import Settings
 from game.bench import main as bench_main
 from game.demos import stress
-from game.levels import FIRST_LEVEL, LevelError, check_level, load_level
+from game.levels import FIRST_LEVEL, LevelError, check_level, load_level, reading
 from game.levels.__main__ import main as levels_main
 from game.sim.campaign import Campaign
 from game.sim.inputs import Action
@@ -78,7 +78,7 @@ def a_file(tmp_path: Path) -> Path:
 
 def test_a_pipe_nobody_writes_to_is_a_sentence_not_a_hang(
         fifo: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(files, "MAX_PIPE_WAIT_S", 0.2)
+    monkeypatch.setattr(reading, "MAX_PIPE_WAIT_S", 0.2)
     status, err = outcome(cli.main, ["--headless", "--ticks", "5", "--inputs", str(fifo)],
                           capsys)
     assert_one_sentence(status, err, 1)
@@ -279,7 +279,7 @@ def short_run(ticks: str) -> bool:
 def test_the_game_answers_random_paths_numbers_and_bytes_with_a_status(
         tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch,
         choices: list[tuple[str, int]], ticks: str, content: bytes) -> None:
-    monkeypatch.setattr(files, "MAX_PIPE_WAIT_S", 0.05)
+    monkeypatch.setattr(reading, "MAX_PIPE_WAIT_S", 0.05)
     paths = _paths(tmp_path)
     (tmp_path / "plain.txt").write_bytes(content)  # random bytes as a script or a level
     args = ["--headless", "--ticks", ticks]

@@ -32,22 +32,20 @@ import errno
 import os
 import re
 import stat
-import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from game.levels.outputs import (
     image_suffix,
-    temporary_path,
+    refusal,
+    replace_atomically,
     temporary_pattern,
     write_surface,
 )
+from game.levels.reading import ReadProblem, read_text
 
 MAX_PATH_SHOWN_CHARS = 200  # a path longer than this is shown by its start and end
-MAX_PIPE_WAIT_S = 10.0  # a pipe read for a file may stay silent this long, no longer
-PIPE_POLL_S = 0.01
-PIPE_CHUNK_BYTES = 64 * 1024
 
 
 class FileProblem(Exception):
@@ -83,97 +81,21 @@ def _reason(error: OSError) -> str:
     return error.strerror or type(error).__name__
 
 
-def _read_pipe(path: Path, max_bytes: int, what: str) -> bytes:
-    """Everything written into the pipe at ``path`` until its writer closes it, waiting at
-    most MAX_PIPE_WAIT_S for each piece: a pipe nobody writes to is a sentence, not a hang.
-
-    The pipe is opened without blocking (an ordinary open would wait for a writer forever);
-    until a writer has appeared, an empty read means "nobody yet", not "the end".
-    """
-    name = shown(path)
-    try:
-        descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-    except OSError as error:
-        raise FileProblem(f"{name}: {what} cannot be read ({_reason(error)}) — check the path",
-                          _reason(error)) from None
-    data, writer_seen = bytearray(), False
-    deadline = time.monotonic() + MAX_PIPE_WAIT_S
-    try:
-        while len(data) <= max_bytes:
-            try:
-                chunk = os.read(descriptor, PIPE_CHUNK_BYTES)
-            except BlockingIOError:  # a writer is there, with nothing to say yet
-                chunk, writer_seen = None, True
-            if chunk:
-                data += chunk
-                writer_seen, deadline = True, time.monotonic() + MAX_PIPE_WAIT_S
-                continue
-            if chunk == b"" and writer_seen:
-                break  # the writer closed the pipe: that is all
-            if time.monotonic() > deadline:
-                raise FileProblem(f"{name}: {what} is a pipe and nothing came through it for "
-                                  f"{MAX_PIPE_WAIT_S:g} s — give the path of a file",
-                                  "nothing came through the pipe")
-            time.sleep(PIPE_POLL_S)
-    finally:
-        os.close(descriptor)
-    return bytes(data)
-
-
-def read_small_text(path: Path, max_bytes: int, what: str, pipes: bool = False) -> str:
+def read_small_text(path: Path, max_bytes: int, what: str, pipes: bool = False,
+                    updated: bool = False) -> str:
     """The UTF-8 text of a regular file of at most ``max_bytes``; else a FileProblem.
 
     ``what`` names the file for the message (``"the input script"``). With ``pipes``, a
-    named pipe (or a shell's ``<(command)``) is read too, with a time limit.
+    named pipe (or a shell's ``<(command)``) is read too, with a time limit. ``updated``
+    marks a file the run will write again (a save); any other file read is an input that
+    no output of the run may replace. The reading itself is
+    :func:`game.levels.reading.read_bounded`, the one every command reads through.
     """
-    name = shown(path)
     try:
-        status = path.stat()
-    except (FileNotFoundError, NotADirectoryError):
-        raise FileProblem(f"{name}: {what} does not exist — check the path",
-                          "it does not exist") from None
-    except (OSError, ValueError) as error:
-        reason = _reason(error) if isinstance(error, OSError) else "not a usable path"
-        raise FileProblem(f"{name}: {what} cannot be read ({reason}) — check the path",
-                          reason) from None
-    if stat.S_ISDIR(status.st_mode):
-        raise FileProblem(f"{name}: {what} is a folder, not a file — give the path of a file",
-                          "it is a folder")
-    if pipes and stat.S_ISFIFO(status.st_mode):
-        return _decode(_checked_size(_read_pipe(path, max_bytes, what), max_bytes, name, what),
-                       name, what)
-    if not stat.S_ISREG(status.st_mode):
-        raise FileProblem(f"{name}: {what} is not a regular file (a pipe or a device?) — "
-                          "give the path of a file", "it is not a regular file")
-    if status.st_size > max_bytes:
-        raise FileProblem(f"{name}: {what} is larger than {max_bytes:,} bytes — "
-                          "give a smaller file", f"it is larger than {max_bytes:,} bytes")
-    try:  # non-blocking: the file could be swapped for a pipe between stat and open
-        descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-        with os.fdopen(descriptor, "rb") as stream:
-            if not stat.S_ISREG(os.fstat(stream.fileno()).st_mode):
-                raise FileProblem(f"{name}: {what} is not a regular file — "
-                                  "give the path of a file")
-            data = stream.read(max_bytes + 1)
-    except OSError as error:
-        raise FileProblem(f"{name}: {what} cannot be read ({_reason(error)}) — "
-                          "check that you may read it", _reason(error)) from None
-    return _decode(_checked_size(data, max_bytes, name, what), name, what)
-
-
-def _checked_size(data: bytes, max_bytes: int, name: str, what: str) -> bytes:
-    if len(data) > max_bytes:
-        raise FileProblem(f"{name}: {what} is larger than {max_bytes:,} bytes — "
-                          "give a smaller file", f"it is larger than {max_bytes:,} bytes")
-    return data
-
-
-def _decode(data: bytes, name: str, what: str) -> str:
-    try:
-        return data.decode("utf-8")
-    except UnicodeDecodeError:
-        raise FileProblem(f"{name}: {what} is not UTF-8 text — save it as plain text",
-                          "it is not UTF-8 text") from None
+        return read_text(path, max_bytes, what, pipes=pipes, updated=updated)
+    except ReadProblem as problem:
+        raise FileProblem(f"{shown(path)}: {problem.problem} — {problem.fix}",
+                          problem.problem.removeprefix(what).strip()) from None
 
 
 def output_problem(path: Path) -> str | None:
@@ -202,7 +124,11 @@ def output_problem(path: Path) -> str | None:
     if status is not None and not stat.S_ISREG(status.st_mode):
         return (f"{name}: it is not a regular file (a pipe or a device?), and writing would "
                 "replace it — give the path of a file")
-    return _writable_folder_problem(name, Path(os.path.abspath(path)).parent)
+    folder = _writable_folder_problem(name, Path(os.path.abspath(path)).parent)
+    refused = refusal(path)
+    if folder is None and refused is not None:
+        return f"{name}: it cannot be written ({refused}) — give another path"
+    return folder
 
 
 def folder_problem(path: Path) -> str | None:
@@ -222,11 +148,16 @@ def folder_problem(path: Path) -> str | None:
             return f"{name}: it is a file, not a folder — give the path of a folder"
     except (OSError, ValueError):
         return f"{name}: it cannot be used as a folder — give another path"
-    return _writable_folder_problem(name, Path(os.path.abspath(path)))
+    folder = Path(os.path.abspath(path))
+    if not folder.is_dir() and not folder.parent.is_dir():
+        return (f"{name}: the folder {shown(folder.parent)} that would hold it does not exist "
+                "— make it first, or give another path")
+    return _writable_folder_problem(name, folder)
 
 
 def _writable_folder_problem(name: str, folder: Path) -> str | None:
-    """Why files cannot be written in ``folder`` (made if missing), or None."""
+    """Why files cannot be written in ``folder`` (or, when it is missing, in the folder
+    above it, where it would be made), or None."""
     while True:  # the nearest folder that exists must be a folder we may write in
         try:
             folder_status = folder.stat()
@@ -249,32 +180,26 @@ DISK_FULL = (errno.ENOSPC, errno.EFBIG, errno.EDQUOT)
 
 def write_atomically(path: Path, write: Callable[[Path], None],
                      suffix: str | None = None) -> None:
-    """Call ``write`` on a temporary path beside ``path``, then rename it into place.
+    """Call ``write`` on a temporary path beside ``path``, then rename it into place, through
+    the one atomic write every command uses
+    (:func:`game.levels.outputs.replace_atomically`).
 
-    A path that cannot be written (a folder, a device, a full disk) is a FileProblem naming
-    ``path`` itself, and no temporary file is left behind. ``suffix`` is the temporary
-    file's ending, when the writer picks its format by name."""
+    A path that cannot be written (a folder, a device, a full disk, a missing folder, a
+    symbolic link, a file this run reads) is a FileProblem naming ``path`` itself, and no
+    temporary file is left behind. ``suffix`` is the temporary file's ending, when the
+    writer picks its format by name."""
     problem = output_problem(path)
     if problem is not None:
         raise FileProblem(problem, _cause(problem))
     remove_orphans(path)  # what a killed writer of this same file left behind
-    tmp = temporary_path(path, suffix)  # short and plain, whatever the real name
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        write(tmp)
-        os.replace(tmp, path)
+        replace_atomically(path, write, suffix)
     except (OSError, ValueError) as error:
-        with contextlib.suppress(OSError):
-            tmp.unlink(missing_ok=True)
         code = error.errno if isinstance(error, OSError) else None
         reason = _reason(error) if isinstance(error, OSError) else str(error)
         fix = "free some space" if code in DISK_FULL else "give another path"
         raise FileProblem(f"{shown(path)}: could not be written ({reason}) — {fix}",
                           reason) from None
-    except BaseException:
-        with contextlib.suppress(OSError):
-            tmp.unlink(missing_ok=True)
-        raise
 
 
 def save_image(surface: Any, path: Path) -> None:

@@ -111,7 +111,7 @@ class JsonFile:
         try:
             if not self.path.exists() and not self.path.is_symlink():
                 return default(), None
-            text = read_small_text(self.path, MAX_SAVE_BYTES, "the file")
+            text = read_small_text(self.path, MAX_SAVE_BYTES, "the file", updated=True)
         except FileProblem as error:
             if not self.path.is_file():  # a folder or a pipe: not ours to move aside
                 self.blocked = f"{error}; nothing will be saved over it this session."
@@ -153,6 +153,10 @@ class JsonFile:
         """Write ``data`` as JSON, atomically; return a sentence if it could not be saved."""
         if self.blocked is not None:
             return self.blocked
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)  # the game's own data folder
+        except OSError as error:
+            return f"Could not save {self.path} ({_reason(error)}); the previous file is intact."
         try:
             write_text_atomically(self.path, json.dumps(data, indent=2, sort_keys=True) + "\n")
         except FileProblem as error:

@@ -61,7 +61,7 @@ def run(sizes: Sizes, out: Path, echo: Callable[[str], None] = print,
         ) -> tuple[dict[str, list[Row]], list[targets.Target]]:
     """Measure, write ``<chart>.csv`` and ``<chart>.png`` for every chart, then the targets
     (``targets.csv``, ``targets.md``, ``targets.png``) and ``README.md``."""
-    out.mkdir(parents=True, exist_ok=True)
+    out.mkdir(exist_ok=True)
     footnote = f"{machine.footnote()} · made by {command(sizes)}"
     results: dict[str, list[Row]] = {}
     for chart in CHARTS:

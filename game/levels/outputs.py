@@ -27,6 +27,7 @@ from pathlib import Path
 import pygame
 
 from game.levels.errors import escaped
+from game.levels.reading import was_read
 
 MAX_TEMPORARY_STEM_CHARS = 100  # far below the 255 bytes a name may take
 IMAGE_SUFFIXES = (".png", ".bmp", ".tga", ".jpg", ".jpeg")  # what pygame writes by name
@@ -84,18 +85,74 @@ def write_surface(surface: pygame.Surface, tmp: Path, suffix: str) -> None:
                           os.strerror(errno.ENOSPC) if full else str(error)) from None
 
 
+class Refused(ValueError):
+    """An output that must not be written where it was asked for; the message is the
+    reason (``"it is a file this run reads"``)."""
+
+
+def refusal(path: Path) -> str | None:
+    """Why ``path`` must never be replaced by an output of this run, or None: a symbolic
+    link (writing through it would change a file elsewhere, replacing it would break the
+    link), a file this run has read (a map, a tileset, an image, a script: an output written
+    there would destroy the input), or a folder that is not there (no folder is made).
+
+    >>> import tempfile
+    >>> folder = Path(tempfile.mkdtemp())
+    >>> refusal(folder / "new.txt") is None
+    True
+    >>> refusal(folder / "missing" / "new.txt")
+    'its folder does not exist'
+    """
+    try:
+        if path.is_symlink():
+            return "it is a symbolic link"
+        if not Path(os.path.abspath(path)).parent.is_dir():
+            return "its folder does not exist"
+    except (OSError, ValueError):
+        return None  # a name the system refuses: the write itself will say so
+    if was_read(path):
+        return "it is a file this run reads"
+    return None
+
+
+def _sync(path: Path, flags: int) -> None:
+    """Ask the system to put ``path`` on the disk now (a folder: its list of names)."""
+    try:
+        descriptor = os.open(path, flags)
+    except OSError:
+        return  # a folder that cannot be opened (some platforms): the rename still stands
+    try:
+        os.fsync(descriptor)
+    except OSError:
+        pass
+    finally:
+        os.close(descriptor)
+
+
 def replace_atomically(path: Path, write: Callable[[Path], object],
                        suffix: str | None = None) -> None:
-    """Call ``write`` on a temporary path beside ``path``, then rename it over ``path``;
-    on any error the temporary file is removed and the error raised."""
+    """The one way out: call ``write`` on a temporary path beside ``path``, put it on the
+    disk, then rename it over ``path``; on any error or interruption (Ctrl-C included) the
+    temporary file is removed, the original left as it was, and the error raised.
+
+    :class:`Refused` (a ValueError) when :func:`refusal` forbids the path."""
+    refused = refusal(path)
+    if refused is not None:
+        raise Refused(refused)
     tmp = temporary_path(path, suffix)
     try:
         write(tmp)
+        descriptor = os.open(tmp, os.O_RDONLY)
+        try:
+            os.fsync(descriptor)  # the new bytes are on the disk before the name moves
+        finally:
+            os.close(descriptor)
         os.replace(tmp, path)
     except BaseException:
         with contextlib.suppress(OSError):
             tmp.unlink(missing_ok=True)
         raise
+    _sync(Path(os.path.abspath(path)).parent, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
 
 
 def _named(path: Path) -> str:

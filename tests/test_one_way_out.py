@@ -1,0 +1,159 @@
+"""The one way out: every file a command writes is written whole, beside its target, and
+never over a file the same run reads, through a link, or into a folder that is not there.
+
+Each case is a designer's or player's file that an earlier writer lost: a screenshot or a
+solver's script named like the map, a recording named like the script it replays, a route
+picture named like the tileset's image, a write cut short by Ctrl-C or a full disk.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import shutil
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from game.app import cli, files
+from game.levels import outputs, reading
+from game.levels.__main__ import main as levels_main
+from tests.in_process import call_main
+
+ROOT = Path(__file__).resolve().parent.parent
+SCRIPT = ROOT / "tests" / "scripts" / "01-first-steps.txt"
+
+
+@pytest.fixture
+def pack(tmp_path: Path) -> Path:
+    """A copy of the project's levels and assets: a pack whose files can be lost."""
+    for name in ("levels", "assets"):
+        shutil.copytree(ROOT / name, tmp_path / name,
+                        ignore=shutil.ignore_patterns("screenshots", "charts", "guide"))
+    shutil.copy(SCRIPT, tmp_path / "win.txt")
+    return tmp_path
+
+
+def _refused_and_kept(ran_status: int, err: str, kept: Path, before: bytes) -> None:
+    assert ran_status == 1, err
+    assert "Traceback" not in err and len(err.strip().splitlines()) == 1, err
+    assert "this run reads" in err, err
+    assert kept.read_bytes() == before
+
+
+@pytest.mark.parametrize("option", ["--screenshot", "--report", "--record"])
+def test_a_game_output_named_like_its_level_leaves_the_level_whole(pack: Path,
+                                                                   option: str) -> None:
+    level = pack / "levels" / "01-first-steps.tmx"
+    before = level.read_bytes()
+    ran = call_main(cli.main, ["--headless", "--level", level, "--ticks", "3", option, level])
+    _refused_and_kept(ran.returncode, ran.stderr, level, before)
+
+
+def test_a_recording_named_like_the_script_it_replays_leaves_the_script_whole(
+        pack: Path) -> None:
+    script = pack / "win.txt"
+    before = script.read_bytes()
+    ran = call_main(cli.main, ["--headless", "--level", pack / "levels" / "01-first-steps.tmx",
+                               "--inputs", script, "--record", script])
+    _refused_and_kept(ran.returncode, ran.stderr, script, before)
+
+
+@pytest.mark.parametrize(("option", "target"), [
+    ("--out", "levels/01-first-steps.tmx"),
+    ("--picture", "assets/tiles.png"),
+    ("--out", "assets/tiles.tsx"),
+])
+def test_a_solver_output_named_like_its_map_or_tileset_leaves_them_whole(
+        pack: Path, option: str, target: str) -> None:
+    kept = pack / target
+    before = kept.read_bytes()
+    ran = call_main(levels_main, ["solve", pack / "levels" / "01-first-steps.tmx",
+                                  "--budget", "2000", option, kept])
+    _refused_and_kept(ran.returncode, ran.stdout + ran.stderr, kept, before)
+
+
+def test_a_file_read_through_a_link_is_still_known_as_read(tmp_path: Path) -> None:
+    real = tmp_path / "script.txt"
+    real.write_text("0 right\n", encoding="utf-8")
+    (tmp_path / "alias.txt").symlink_to(real)
+    reading.read_text(tmp_path / "alias.txt", 100, "the script")
+    assert reading.was_read(real)
+    assert outputs.refusal(real) == "it is a file this run reads"
+
+
+def test_a_save_read_to_be_updated_may_be_written_again(tmp_path: Path) -> None:
+    save = tmp_path / "progress.json"
+    save.write_text("{}", encoding="utf-8")
+    files.read_small_text(save, 100, "the file", updated=True)
+    files.write_text_atomically(save, '{"a": 1}')
+    assert save.read_text(encoding="utf-8") == '{"a": 1}'
+
+
+def _writer_that_fails_halfway(failure: BaseException) -> Callable[[Path], None]:
+    def write(tmp: Path) -> None:
+        with tmp.open("wb") as stream:
+            stream.write(b"half of the new")
+        raise failure
+    return write
+
+
+@pytest.mark.parametrize("failure", [KeyboardInterrupt(), OSError(errno.ENOSPC, "No space")])
+def test_a_write_cut_short_keeps_the_original_and_leaves_no_temporary_file(
+        tmp_path: Path, failure: BaseException) -> None:
+    target = tmp_path / "map.tmx"
+    target.write_bytes(b"the designer's map")
+    with pytest.raises(type(failure)):
+        outputs.replace_atomically(target, _writer_that_fails_halfway(failure))
+    assert target.read_bytes() == b"the designer's map"
+    assert [p.name for p in tmp_path.iterdir()] == ["map.tmx"]
+
+
+def test_a_full_disk_is_one_sentence_that_says_to_free_space(tmp_path: Path) -> None:
+    target = tmp_path / "report.json"
+    target.write_text("old", encoding="utf-8")
+    with pytest.raises(files.FileProblem, match=r"free some space$"):
+        files.write_atomically(target, _writer_that_fails_halfway(
+            OSError(errno.ENOSPC, "No space left on device")))
+    assert target.read_text(encoding="utf-8") == "old"
+
+
+def test_the_new_bytes_are_on_the_disk_before_the_name_moves(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    target = tmp_path / "out.txt"
+    events: list[str] = []
+    real_fsync, real_replace = os.fsync, os.replace
+
+    def fsync(descriptor: int) -> None:
+        events.append("fsync")
+        real_fsync(descriptor)
+
+    def replace(source: str | Path, destination: str | Path) -> None:
+        events.append("replace")
+        real_replace(source, destination)
+
+    monkeypatch.setattr(os, "fsync", fsync)
+    monkeypatch.setattr(os, "replace", replace)
+    outputs.replace_atomically(target, lambda tmp: tmp.write_text("new", encoding="utf-8"))
+    assert events[:2] == ["fsync", "replace"]
+    assert target.read_text(encoding="utf-8") == "new"
+
+
+def test_an_output_that_is_a_link_is_refused_and_its_target_left_alone(
+        tmp_path: Path) -> None:
+    outside = tmp_path / "outside.txt"
+    outside.write_text("someone else's", encoding="utf-8")
+    link = tmp_path / "pack" / "report.json"
+    link.parent.mkdir()
+    link.symlink_to(outside)
+    ran = call_main(cli.main, ["--headless", "--ticks", "2", "--report", link])
+    assert ran.returncode == 1 and "symbolic link" in ran.stderr
+    assert outside.read_text(encoding="utf-8") == "someone else's" and link.is_symlink()
+
+
+def test_a_folder_that_is_not_there_is_an_error_and_is_not_made(tmp_path: Path) -> None:
+    missing = tmp_path / "no" / "such" / "folder" / "report.json"
+    ran = call_main(cli.main, ["--headless", "--ticks", "2", "--report", missing])
+    assert ran.returncode == 1 and "does not exist" in ran.stderr
+    assert not (tmp_path / "no").exists()
