@@ -1,0 +1,109 @@
+"""What the level tools print is bounded, escaped and honest, and an output nobody reads
+ends them quietly: each test is a case an attacker found, rebuilt from its description.
+
+Closed and full outputs need the program itself (a real descriptor 1); the rest is called
+in this process (:mod:`tests.in_process`).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
+from pathlib import Path
+from typing import IO
+
+import pytest
+
+from game.levels.__main__ import main as levels_main
+from game.sim.inputs import InputScript
+from tests.in_process import Ran, call_main
+from tests.maps import write_tmx
+
+ROOT = Path(__file__).resolve().parent.parent
+ENV = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy",
+       "PYTHONDONTWRITEBYTECODE": "1"}
+TIMEOUT_S = 60  # a hang guard, not a speed limit
+
+
+@contextmanager
+def closed_or_full(kind: str) -> Iterator[IO[bytes] | int]:
+    """A standard output that fails every write: a pipe whose reader has gone (``| head``
+    after it stopped reading), or ``/dev/full``."""
+    if kind == "full":
+        with open("/dev/full", "wb") as full:
+            yield full
+        return
+    reader, writer = os.pipe()
+    os.close(reader)
+    try:
+        yield writer
+    finally:
+        os.close(writer)
+
+
+def run_into(kind: str, args: list[str]) -> subprocess.CompletedProcess[str]:
+    with closed_or_full(kind) as stdout:
+        return subprocess.run([sys.executable, *args], cwd=ROOT, env=ENV, stdout=stdout,
+                              stderr=subprocess.PIPE, text=True, timeout=TIMEOUT_S,
+                              check=False)
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full")
+@pytest.mark.parametrize("kind", ["closed", "full"])
+@pytest.mark.parametrize("command", ["check", "check-json", "reach", "lab --list"])
+def test_an_output_closed_or_full_ends_the_command_quietly_with_its_status(
+        tmp_path: Path, kind: str, command: str) -> None:
+    level = write_tmx(tmp_path, ["P   D", "#####"])
+    args = {"check": ["-m", "game.levels", "check", str(level), "--jobs", "1"],
+            "check-json": ["-m", "game.levels", "check", str(level), "--format", "json"],
+            "reach": ["-m", "game.levels", "reach"],
+            "lab --list": ["-m", "game.lab", "--list"]}[command]
+    ran = run_into(kind, args)
+    assert (ran.returncode, ran.stderr) == (0, "")
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="needs /dev/full")
+@pytest.mark.parametrize("kind", ["closed", "full"])
+def test_solve_writes_its_route_whatever_becomes_of_its_output(tmp_path: Path,
+                                                               kind: str) -> None:
+    """With --out the route is a file, written whatever the output; without, a route that
+    could not be printed is said (status 1), never lost in silence."""
+    level = write_tmx(tmp_path, ["P   D", "#####"])
+    script = tmp_path / "route.txt"
+    written = run_into(kind, ["-m", "game.levels", "solve", str(level), "--out", str(script)])
+    assert written.returncode == 0 and "Traceback" not in written.stderr
+    assert script.read_text(encoding="utf-8").strip()
+    printed = run_into(kind, ["-m", "game.levels", "solve", str(level)])
+    assert printed.returncode == 1
+    assert "Traceback" not in printed.stderr and "Exception ignored" not in printed.stderr
+    assert "give --out SCRIPT" in printed.stderr.strip().splitlines()[-1]
+
+
+def checker(*args: str | Path) -> Ran:
+    return call_main(levels_main, ["check", "--jobs", "1", *map(str, args)])
+
+
+def as_json(ran: Ran) -> dict[str, object]:
+    document = json.loads(ran.stdout)
+    assert isinstance(document, dict)
+    return document
+
+
+def test_a_tick_of_5000_digits_is_read_as_the_number_it_is() -> None:
+    script = InputScript.parse("0" * 4999 + "7 +jump\n", "win.txt")
+    assert [event.tick for event in script.events] == [7]
+
+
+def test_a_firstgid_of_5000_digits_is_out_of_range_in_a_sentence(tmp_path: Path) -> None:
+    level = write_tmx(tmp_path, ["P   D", "#####"])
+    text = level.read_text(encoding="utf-8")
+    level.write_text(text.replace('firstgid="1"', f'firstgid="{"1" * 5000}"'),
+                     encoding="utf-8")
+    ran = checker(level, "--no-solve")
+    (line, _summary) = ran.stdout.splitlines()
+    assert ran.returncode == 1 and "firstgid is '1111" in line
+    assert "(5,000 characters), not a whole number from 1 to" in line
