@@ -107,3 +107,46 @@ def test_a_firstgid_of_5000_digits_is_out_of_range_in_a_sentence(tmp_path: Path)
     (line, _summary) = ran.stdout.splitlines()
     assert ran.returncode == 1 and "firstgid is '1111" in line
     assert "(5,000 characters), not a whole number from 1 to" in line
+
+
+def test_a_folder_1200_levels_deep_is_walked_without_recursion(tmp_path: Path) -> None:
+    deepest = tmp_path
+    for _ in range(1_200):  # os.makedirs would itself recurse
+        deepest = deepest / "a"
+        deepest.mkdir()
+    write_tmx(deepest, ["P   D", "#####"])
+    try:
+        ran = checker(tmp_path, "--no-solve")
+        assert ran.returncode == 0 and ran.stdout.startswith("checked 1 map(s): all playable")
+    finally:
+        while deepest != tmp_path:  # shutil.rmtree recurses too
+            for child in deepest.iterdir():
+                child.unlink()
+            deepest.rmdir()
+            deepest = deepest.parent
+
+
+def test_a_proof_that_is_a_pipe_is_refused_at_once(tmp_path: Path) -> None:
+    level = write_tmx(tmp_path, ["P   D", "#####"])
+    pipe = tmp_path / "win.txt"
+    os.mkfifo(pipe)
+    ran = call_main(levels_main, ["check", str(level), "--proof", str(pipe)], hang_s=20)
+    line = ran.stdout.splitlines()[0]
+    assert ran.returncode == 1
+    assert line.startswith(f"{pipe}: the input script is not a regular file")
+
+
+@pytest.mark.parametrize(("content", "problem"), [
+    (b"0 +right\n" + b"9" * 5000 + b" +jump\n", "line 2: the tick '9999"),
+    (b"0 +right\n3 +fly\n", "line 2: unknown action 'fly'"),
+    (b"0 +right\n\xe9 +jump\n", "the input script is not UTF-8 text"),
+])
+def test_a_bad_proof_is_said_of_the_script_and_its_line_not_of_the_map(
+        tmp_path: Path, content: bytes, problem: str) -> None:
+    level = write_tmx(tmp_path, ["P   D", "#####"])
+    script = tmp_path / "win.txt"
+    script.write_bytes(content)
+    ran = checker(level, "--proof", script)
+    line = ran.stdout.splitlines()[0]
+    assert ran.returncode == 1 and line.startswith(f"{script}: {problem}"), line
+    assert " — " in line and "could not be read" not in line

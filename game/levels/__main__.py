@@ -52,6 +52,7 @@ from game.levels.errors import LevelError, escaped
 from game.levels.loader import load_level
 from game.levels.outputs import image_suffix, unwritable, write_output, write_surface
 from game.levels.reach import limits_of, measure_limits, measure_reach
+from game.levels.reading import reason
 from game.levels.route_picture import draw_route
 from game.levels.shipped import LEVELS_DIR
 from game.levels.side_by_side import check_maps, usable_cores
@@ -83,13 +84,29 @@ def command_name(argv0: str | None = None) -> str:
     return name.removesuffix(".exe")
 
 
+def _maps_in(folder: Path) -> list[Path]:
+    """The ``.tmx`` maps anywhere under ``folder``, sorted. The folders are walked with a
+    list of folders still to look into, not by recursion, so a folder 1,200 levels deep is
+    no RecursionError; a link to a folder is not followed (it could lead back up)."""
+    found: list[Path] = []
+    waiting = [folder]
+    while waiting:
+        with os.scandir(waiting.pop()) as entries:
+            for entry in entries:
+                if entry.is_dir(follow_symlinks=False):
+                    waiting.append(Path(entry.path))
+                elif entry.name.endswith(".tmx"):
+                    found.append(Path(entry.path))
+    return sorted(found)
+
+
 def _maps(path: Path) -> Iterator[tuple[Path, str | None]]:
     """The maps a command-line path stands for, or the path and why it stands for none."""
     try:
         is_folder = path.is_dir()
-        found = sorted(path.rglob("*.tmx")) if is_folder else []
+        found = _maps_in(path) if is_folder else []
     except (OSError, ValueError) as error:
-        yield path, f"{path}: the path cannot be read ({error}) — check it"
+        yield path, escaped(f"{path}: the path cannot be read ({reason(error)}) — check it")
         return
     if not is_folder:
         yield path, None

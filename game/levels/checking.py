@@ -20,17 +20,21 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from game.levels.designer_checks import designer_findings
-from game.levels.errors import LevelError, LevelWarning
+from game.levels.errors import Findings, LevelError, LevelWarning, escaped
 from game.levels.loader import check_level, load_level
+from game.levels.reading import read_level_file
 from game.levels.solver import Effort
 from game.levels.verdict import Kind, Verdict, judge, judge_proof
-from game.sim.inputs import InputScriptError
+from game.sim.inputs import InputScript, InputScriptError
 from game.sim.level import Level
 from game.sim.tuning import Tuning
 
 OBJECT_PLACE = re.compile(r"object #(\d+)")
 TILE_PLACE = re.compile(r"tile \((-?\d+),(-?\d+)\)")
 LAYER_PLACE = re.compile(r"layer '([^']*)'")
+MAX_PROOF_BYTES = 4 * 1024 * 1024  # a recorded win: 300,000 events or more
+FIX_PROOF = "record the win again with python -m game --level MAP --record SCRIPT"
+FIX_PROOF_PATH = "give --proof the path of a script recorded with python -m game --record"
 
 
 @dataclass(frozen=True)
@@ -106,10 +110,33 @@ def _add_verdict(report: MapReport, verdict: Verdict) -> None:
                verdict.finding, verdict.advice)
 
 
+class ProofError(Exception):
+    """A ``--proof`` script that cannot be read or is not an input script; the message is
+    one sentence naming the script (and the line, when one is wrong)."""
+
+
+def read_proof(path: Path) -> InputScript:
+    """The recorded win given with ``--proof``, read as every file of a level is (a regular
+    file, opened without waiting, at most MAX_PROOF_BYTES) and parsed."""
+    try:
+        data = read_level_file(path, Findings(path), "", "input script", MAX_PROOF_BYTES,
+                               "record a shorter win", not_regular_fix=FIX_PROOF_PATH)
+    except LevelError as error:
+        raise ProofError(str(error)) from None
+    try:
+        return InputScript.parse(data.decode("utf-8"), escaped(str(path)))
+    except UnicodeDecodeError:
+        raise ProofError(escaped(f"{path}: the input script is not UTF-8 text — {FIX_PROOF}")
+                         ) from None
+    except InputScriptError as error:
+        text = escaped(str(error))
+        raise ProofError(text if " — " in text else f"{text} — {FIX_PROOF}") from None
+
+
 def judge_level(path: Path, level: Level, options: Options) -> Verdict:
     """The verdict on a loaded map: from the recorded win when given, else searched."""
     if options.proof is not None:
-        return judge_proof(level, options.proof)
+        return judge_proof(level, options.proof, read_proof(options.proof))
     return judge(level, options.effort, options.command)
 
 
@@ -136,12 +163,10 @@ def check_map(path: Path, options: Options) -> MapReport:
             report.tuning = tuning
         if options.solve:
             _add_verdict(report, judge_level(path, level, options))
-    except InputScriptError as error:  # a --proof script with a bad line
-        report.add("error", "", f"the recorded win is not an input script ({error})",
-                   "record it again with python -m game --record SCRIPT")
-    except OSError as error:  # a --proof script that cannot be read
-        report.add("error", "", f"the script {options.proof} cannot be read "
-                   f"({error.strerror or error})", "check the path given to --proof")
+    except ProofError as error:  # the sentence names the script, not the map
+        text = str(error)
+        message, _, fix = text.partition(" — ")
+        report.findings.append(Finding("error", text, "", message.rpartition(": ")[2], fix))
     except Exception as error:  # a loader bug still gets a sentence
         report.add("error", "", f"the map could not be read ({type(error).__name__}: "
                    f"{error})", "open it in Tiled and save it again")

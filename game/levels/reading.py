@@ -45,7 +45,8 @@ def reason(error: BaseException) -> str:
 
 def read_level_file(path: Path, findings: Findings, where: str, what: str, max_bytes: int,
                     too_big_fix: str = "use a smaller file",
-                    missing: tuple[str, str] | None = None) -> bytes:
+                    missing: tuple[str, str] | None = None,
+                    not_regular_fix: str = FIX_REGULAR) -> bytes:
     """The bytes of the regular file at ``path`` (at most ``max_bytes``); fail with one
     sentence naming ``what`` if it is missing (``missing``: the problem and fix to say
     then), not a regular file, or too large."""
@@ -61,10 +62,10 @@ def read_level_file(path: Path, findings: Findings, where: str, what: str, max_b
     try:
         status = os.fstat(descriptor)
         if stat.S_ISDIR(status.st_mode):
-            findings.fail(where, f"the {what} is a folder, not a file", FIX_REGULAR)
+            findings.fail(where, f"the {what} is a folder, not a file", not_regular_fix)
         if not stat.S_ISREG(status.st_mode):
             findings.fail(where, f"the {what} is not a regular file (a pipe or a device?)",
-                          FIX_REGULAR)
+                          not_regular_fix)
         if status.st_size > max_bytes:
             findings.fail(where, f"the {what} is larger than {max_bytes // 2**20} MB",
                           too_big_fix)
