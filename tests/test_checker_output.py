@@ -19,9 +19,11 @@ from typing import IO
 import pytest
 
 from game.levels.__main__ import main as levels_main
+from game.levels.errors import WARNINGS_SHOWN_PER_KIND, clipped, escaped
 from game.sim.inputs import InputScript
 from tests.in_process import Ran, call_main
 from tests.maps import write_tmx
+from tests.test_loader import GROUND, write_map
 
 ROOT = Path(__file__).resolve().parent.parent
 ENV = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy",
@@ -150,3 +152,62 @@ def test_a_bad_proof_is_said_of_the_script_and_its_line_not_of_the_map(
     line = ran.stdout.splitlines()[0]
     assert ran.returncode == 1 and line.startswith(f"{script}: {problem}"), line
     assert " — " in line and "could not be read" not in line
+
+
+def layer_named(name: str, attrs: str = "") -> str:
+    """A 4x3 tile layer named ``name`` (as XML), with ``attrs``."""
+    escaped_name = (name.replace("&", "&amp;").replace('"', "&quot;").replace("<", "&lt;")
+                    .replace("\n", "&#10;"))
+    return (f'<layer name="{escaped_name}" width="4" height="3" {attrs}>'
+            f'<data encoding="csv">{GROUND}</data></layer>')
+
+
+@pytest.mark.parametrize("name", ["object #2 tile (7,3)", "object #" + "9" * 5000,
+                                  "tile (" + "1" * 5000 + ",2)"])
+def test_a_json_finding_takes_its_object_and_tile_from_the_map_not_from_names(
+        tmp_path: Path, name: str) -> None:
+    level = write_map(tmp_path, layer_named(name, 'offsetx="nan"'))
+    ran = checker(level, "--format", "json", "--no-solve")
+    (finding,) = as_json(ran)["maps"][0]["findings"]  # type: ignore[index]
+    assert ran.returncode == 1 and "offsetx" in finding["message"]
+    assert (finding["object_id"], finding["tile"]) == (None, None)
+    assert finding["layer"] == clipped(name)
+
+
+def test_json_escapes_what_the_text_escapes(tmp_path: Path) -> None:
+    name = "sky\nchecked 1 map(s): all playable \u202egnp.exe"
+    level = write_map(tmp_path, layer_named(name, 'offsetx="nan"'))
+    text = checker(level, "--no-solve").stdout.splitlines()[0]
+    ran = checker(level, "--format", "json", "--no-solve")
+    report = as_json(ran)["maps"][0]  # type: ignore[index]
+    (finding,) = report["findings"]
+    assert finding["text"] == text and "\\n" in text and "\\u202e" in text
+    for value in (finding["text"], finding["place"], finding["layer"], report["path"]):
+        assert escaped(value) == value
+
+
+def test_json_is_bounded_as_the_text_is(tmp_path: Path) -> None:
+    """Long names and one slip repeated: the JSON holds what the lines hold, no more."""
+    props = '<properties><property name="note" value="x"/></properties>'
+    layers = "".join(f'<objectgroup name="{chr(65 + i) * 100_000}">{props}</objectgroup>'
+                     for i in range(20))
+    level = write_map(tmp_path, layer_named("ground") + layers)
+    text = checker(level, "--no-solve").stdout
+    ran = checker(level, "--format", "json", "--no-solve")
+    findings = as_json(ran)["maps"][0]["findings"]  # type: ignore[index]
+    assert len(text) < 10_000 and len(ran.stdout) < 4 * len(text)
+    assert findings[-1]["message"] == "… and 15 more like the warnings above"
+
+
+def test_warnings_about_hidden_objects_are_bounded_per_kind(tmp_path: Path) -> None:
+    coins = "".join(f'<object id="{10 + i}" type="Coin" x="40" y="8" width="8" height="8"/>'
+                    for i in range(2_000))
+    hidden = f'<objectgroup name="{"h" * 50_000}" visible="0">{coins}</objectgroup>'
+    level = write_map(tmp_path, layer_named("ground") + hidden)
+    ran = checker(level, "--no-solve")
+    lines = ran.stdout.splitlines()
+    assert len(lines) == WARNINGS_SHOWN_PER_KIND + 2, lines[-3:]
+    assert lines[-2].endswith("… and 1,995 more like the warnings above — show the layer "
+                              "if the object belongs in the level, or delete it if it is "
+                              "left over")
+    assert max(len(line) for line in lines) < 1_500

@@ -100,18 +100,18 @@ def _maps_in(folder: Path) -> list[Path]:
     return sorted(found)
 
 
-def _maps(path: Path) -> Iterator[tuple[Path, str | None]]:
+def _maps(path: Path) -> Iterator[tuple[Path, tuple[str, str] | None]]:
     """The maps a command-line path stands for, or the path and why it stands for none."""
     try:
         is_folder = path.is_dir()
         found = _maps_in(path) if is_folder else []
     except (OSError, ValueError) as error:
-        yield path, escaped(f"{path}: the path cannot be read ({reason(error)}) — check it")
+        yield path, (f"the path cannot be read ({reason(error)})", "check it")
         return
     if not is_folder:
         yield path, None
     elif not found:
-        yield path, f"{path}: this folder holds no .tmx maps — give a map or a folder of maps"
+        yield path, ("this folder holds no .tmx maps", "give a map or a folder of maps")
     else:
         yield from ((map_path, None) for map_path in found)
 
@@ -164,15 +164,15 @@ def check(paths: list[Path], options: Options, output: str = "text", jobs: int =
                 say(escaped(finding.text))
     line, status = _summary(reports, options)
     if output == "json":
-        say(json.dumps({"maps": [r.as_json() for r in reports], "summary": line,
+        say(json.dumps({"maps": [r.as_json() for r in reports], "summary": escaped(line),
                           "status": status}, indent=1))
     else:
         say(escaped(line))
     return status
 
 
-def _refused(path: Path, text: str) -> Finding:
-    return Finding("error", text, "", text.split(": ", 1)[-1], "")
+def _refused(path: Path, refusal: tuple[str, str]) -> Finding:
+    return Finding.of("error", path, "", *refusal)
 
 
 def solve_command(path: Path, out: Path | None, picture: Path | None, effort: Effort,
