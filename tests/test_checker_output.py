@@ -16,14 +16,16 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import IO
 
+import pygame
 import pytest
 
+from game.levels import load_level
 from game.levels.__main__ import main as levels_main
 from game.levels.errors import WARNINGS_SHOWN_PER_KIND, clipped, escaped
 from game.sim.inputs import InputScript
 from tests.in_process import Ran, call_main
 from tests.maps import write_tmx
-from tests.test_loader import GROUND, write_map
+from tests.test_loader import GROUND, TILESET, write_map
 
 ROOT = Path(__file__).resolve().parent.parent
 ENV = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy",
@@ -211,3 +213,14 @@ def test_warnings_about_hidden_objects_are_bounded_per_kind(tmp_path: Path) -> N
                               "if the object belongs in the level, or delete it if it is "
                               "left over")
     assert max(len(line) for line in lines) < 1_500
+
+
+@pytest.mark.usefixtures("display")
+def test_the_checker_and_the_game_spend_the_same_pixel_budget(tmp_path: Path) -> None:
+    """An image of 3008x3008 (more than half the budget) passes the check, so the game,
+    which checks it and then hands it to pytmx, must load it too: counted once."""
+    pygame.image.save(pygame.Surface((3_008, 3_008)), str(tmp_path / "big.png"))
+    image = '<image source="big.png" width="3008" height="3008"/>'
+    level = write_map(tmp_path, tileset=TILESET.format(image=image))
+    assert checker(level, "--no-solve").returncode == 0
+    assert load_level(level, images=True).tile_images
