@@ -36,6 +36,7 @@ checked 6 map(s): all playable; the player jumps 2.8 tiles high and 3.6 tiles ac
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import math
 import os
@@ -55,7 +56,7 @@ from game.levels.reach import limits_of, measure_limits, measure_reach
 from game.levels.reading import reason
 from game.levels.route_picture import draw_route
 from game.levels.shipped import LEVELS_DIR
-from game.levels.side_by_side import check_maps, usable_cores
+from game.levels.side_by_side import Terminated, check_maps, usable_cores
 from game.levels.solver import DEFAULT_BUDGET, Effort
 from game.levels.verdict import Kind, judge
 from game.sim.tuning import TICK_HZ, Tuning
@@ -69,6 +70,7 @@ EXIT_USAGE = 2
 EXIT_UNDECIDED = 3  # nothing bad or impossible, but some map's search was not decided
 MAX_COUNT_DIGITS = 12  # --budget and --jobs: more is a typo, not a plan
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
+EXIT_TERMINATED = 143  # 128 + SIGTERM
 
 
 def command_name(argv0: str | None = None) -> str:
@@ -150,18 +152,19 @@ def check(paths: list[Path], options: Options, output: str = "text", jobs: int =
     ``jobs``: how many maps to check at once (:mod:`game.levels.side_by_side`)."""
     found = [found for argument in paths or sorted(LEVELS_DIR.glob("*.tmx"))  # none: the
              for found in _maps(argument)]                                      # campaign
-    checked = check_maps([path for path, refusal in found if refusal is None], options, jobs)
     reports: list[MapReport] = []
-    for path, refusal in found:
-        if refusal is not None:
-            report = MapReport(path)
-            report.findings.append(_refused(path, refusal))
-        else:
-            report = next(checked)
-        reports.append(report)
-        if output == "text":
-            for finding in report.findings:
-                say(escaped(finding.text))
+    with contextlib.closing(check_maps([path for path, refusal in found if refusal is None],
+                                       options, jobs)) as checked:  # closed: no worker left
+        for path, refusal in found:
+            if refusal is not None:
+                report = MapReport(path)
+                report.findings.append(_refused(path, refusal))
+            else:
+                report = next(checked)
+            reports.append(report)
+            if output == "text":
+                for finding in report.findings:
+                    say(escaped(finding.text))
     line, status = _summary(reports, options)
     if output == "json":
         say(json.dumps({"maps": [r.as_json() for r in reports], "summary": escaped(line),
@@ -286,6 +289,9 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         tell("stopped by Ctrl-C")
         return EXIT_INTERRUPTED
+    except Terminated:  # SIGTERM during a check of maps side by side: the workers end too
+        tell("stopped by SIGTERM")
+        return EXIT_TERMINATED
     finally:
         flush_both()  # an output closed or full ends the command quietly, with its status
 
