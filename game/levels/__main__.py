@@ -14,7 +14,9 @@ nothing; ``--format json`` prints one JSON document instead of lines; ``--jobs N
 up to N maps at once (default: one per core), with the same lines in the same order. The
 summary line counts each verdict and states the player's reach. Exit status: 0 every map
 playable (and, when judged, solved); 1 a map is bad or impossible; 2 bad usage; 3 no map
-bad or impossible, but at least one not decided.
+bad or impossible, but at least one not decided; 130 Ctrl-C; 143 SIGTERM (which ends the
+workers of ``--jobs`` too). An output closed or full changes no status: the lines nobody
+reads are dropped (:mod:`game.levels.closed_output`).
 
 ``solve MAP [--out SCRIPT] [--picture PNG] [--budget N] [--seconds S]`` searches for that
 route, writes it as an input script and draws it over the map; exit 0 when found, 1 when
