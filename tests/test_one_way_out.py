@@ -157,3 +157,13 @@ def test_a_folder_that_is_not_there_is_an_error_and_is_not_made(tmp_path: Path) 
     ran = call_main(cli.main, ["--headless", "--ticks", "2", "--report", missing])
     assert ran.returncode == 1 and "does not exist" in ran.stderr
     assert not (tmp_path / "no").exists()
+
+
+def test_an_output_on_a_pipe_or_device_is_refused_and_left_what_it_is(tmp_path: Path) -> None:
+    fifo = tmp_path / "out.txt"
+    os.mkfifo(fifo)
+    ran = call_main(levels_main, ["solve", ROOT / "levels" / "01-first-steps.tmx",
+                                  "--budget", "2000", "--out", fifo])
+    assert ran.returncode == 1 and "not a regular file" in ran.stdout + ran.stderr
+    assert fifo.is_fifo()
+    assert outputs.refusal(Path("/dev/null")) == "it is not a regular file (a pipe or a device?)"

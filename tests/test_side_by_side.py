@@ -1,5 +1,6 @@
 """Checking maps side by side: the same lines in the same order as one at a time, the
-biggest map started first, and never more processes than cores."""
+biggest map started first, never more processes than cores, and none left behind: not
+after SIGTERM, and not waiting for a worker that was killed."""
 
 from __future__ import annotations
 
@@ -8,6 +9,7 @@ import os
 import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -17,6 +19,7 @@ from game.levels.__main__ import check
 from game.levels.checking import Options
 from game.levels.side_by_side import check_maps
 from game.levels.solver import Effort
+from tests.hang_guard import HANG_S
 from tests.maps import write_tmx
 
 SMALL = Options(effort=Effort(budget=2_000))
@@ -130,3 +133,99 @@ def test_ctrl_c_while_the_pool_starts_stops_the_command_and_every_worker(
         process.communicate()
         pytest.fail("a worker outlived the command and held its output open")
     assert (process.returncode, err) == (130, "stopped by Ctrl-C\n")
+
+
+def _long_folder(tmp_path: Path) -> Path:
+    """Two maps whose searches keep a worker busy for a while, and one short map."""
+    for name in ("a-flat.tmx", "b-flat.tmx"):
+        write_tmx(tmp_path, ["P" + " " * 200 + "D", "#" * 202], name)
+    write_tmx(tmp_path, ["P   D", "#####"], "c-short.tmx")
+    return tmp_path
+
+
+def _children(pid: int) -> list[int]:
+    """The processes whose parent is ``pid``."""
+    found = []
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rpartition(")")[2].split()
+        except OSError:
+            continue
+        if int(fields[1]) == pid:
+            found.append(int(stat.parent.name))
+    return found
+
+
+def _cpu_ticks(pid: int) -> int:
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rpartition(")")[2].split()
+    except OSError:
+        return 0
+    return int(fields[11]) + int(fields[12])  # utime + stime
+
+
+def _busy_workers(process: subprocess.Popen[str]) -> list[int]:
+    """The check's two workers, once both are searching (they have used CPU time)."""
+    for _ in range(int(HANG_S / 0.05)):  # a guard against a hang, not a speed limit
+        workers = [pid for pid in _children(process.pid) if _cpu_ticks(pid) >= 10]
+        if len(workers) == 2:
+            return workers
+        time.sleep(0.05)
+    process.kill()
+    pytest.fail("the check never had two workers searching")
+
+
+def _check_side_by_side(folder: Path) -> subprocess.Popen[str]:
+    return subprocess.Popen(
+        [sys.executable, "-m", "game.levels", "check", str(folder), "--jobs", "2"],
+        cwd=ROOT, text=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+        start_new_session=True)
+
+
+def _left_in(session: int) -> bool:
+    try:
+        os.killpg(session, 0)
+    except ProcessLookupError:
+        return False
+    return True
+
+
+needs_two_cores = pytest.mark.skipif(
+    side_by_side.usable_cores() < 2 or not Path("/proc/self/stat").exists(),
+    reason="two workers, seen through /proc")
+
+
+@needs_two_cores
+def test_sigterm_ends_every_worker_with_the_check(tmp_path: Path) -> None:
+    process = _check_side_by_side(_long_folder(tmp_path))
+    _busy_workers(process)
+    os.kill(process.pid, signal.SIGTERM)
+    try:
+        _out, err = process.communicate(timeout=HANG_S)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.communicate()
+        pytest.fail("the check did not end")
+    assert (process.returncode, err) == (143, "stopped by SIGTERM\n")
+    assert not _left_in(process.pid), "a worker outlived the check"
+
+
+@needs_two_cores
+def test_a_worker_killed_mid_check_is_reported_and_the_rest_are_checked(
+        tmp_path: Path) -> None:
+    process = _check_side_by_side(_long_folder(tmp_path))
+    os.kill(_busy_workers(process)[0], signal.SIGKILL)  # as the out-of-memory killer does
+    try:
+        out, err = process.communicate(timeout=HANG_S)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.communicate()
+        pytest.fail("the check waited for ever for the map of the killed worker")
+    lines = out.splitlines()
+    assert (process.returncode, err) == (1, "")
+    (killed,) = [line for line in lines if "was killed by signal 9" in line]
+    assert killed.startswith(str(tmp_path / "a-flat.tmx")) or killed.startswith(
+        str(tmp_path / "b-flat.tmx"))
+    assert " — check this map alone (--jobs 1)" in killed
+    assert lines[-1].startswith("checked 3 map(s): 1 not playable, 2 solved;")
+    assert not _left_in(process.pid)

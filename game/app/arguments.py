@@ -35,6 +35,8 @@ import sys
 from collections.abc import Callable
 from typing import Any, NoReturn
 
+from game.sim.whole_numbers import NumberTextError, read_whole
+
 EXIT_USAGE = 2
 EXIT_INTERRUPTED = 130  # 128 + SIGINT
 MAX_QUOTED_CHARS = 40  # at most this much of a bad value is quoted back
@@ -57,11 +59,11 @@ def whole_number(low: int, high: int, unit: str) -> Callable[[str], int]:
     """An argparse ``type`` for a whole number from ``low`` to ``high`` (in ``unit``)."""
     def parse(text: str) -> int:
         limits = f"from {low:,} to {high:,} {unit}"
-        digits = text.strip().removeprefix("-").removeprefix("+")
-        if not (digits.isascii() and digits.isdigit()) or len(digits) > MAX_DIGITS:
+        try:
+            value = read_whole(text.strip(), MAX_DIGITS, signed=True)
+        except NumberTextError:
             shown = text if len(text) <= MAX_QUOTED_CHARS else excerpt(text)
-            raise argparse.ArgumentTypeError(f"{shown} is not a whole number {limits}")
-        value = int(text)
+            raise argparse.ArgumentTypeError(f"{shown} is not a whole number {limits}") from None
         if not low <= value <= high:
             raise argparse.ArgumentTypeError(f"{text.strip()} is not a whole number {limits}")
         return value

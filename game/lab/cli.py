@@ -23,6 +23,7 @@ from game.app.arguments import Parser, excerpt, whole_number
 from game.app.display import EXIT_NO_WINDOW, LAB_INSTEAD, LAB_WINDOW, open_window
 from game.app.files import FileProblem, output_problem, save_image, shown
 from game.lab.catalogue import SCENES
+from game.levels.closed_output import say
 
 MAX_FRAMES = 36_000  # ten minutes of the lab at 60 frames a second
 
@@ -60,7 +61,9 @@ def main(argv: list[str] | None = None) -> int:
     names = scene_names()
     if args.list:
         # Bare names when a script reads them (the public form), columns for a person.
-        print("\n".join(listing() if args.long or sys.stdout.isatty() else names))
+        # An output closed or full (| head -1) ends the listing quietly, still status 0.
+        say("\n".join(listing() if args.long or (sys.stdout is not None
+                                                 and sys.stdout.isatty()) else names))
         return 0
     if args.scene is not None and args.scene not in names:
         print(f"python -m game.lab: there is no scene called {excerpt(args.scene)}; the scenes "

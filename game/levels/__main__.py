@@ -14,7 +14,9 @@ nothing; ``--format json`` prints one JSON document instead of lines; ``--jobs N
 up to N maps at once (default: one per core), with the same lines in the same order. The
 summary line counts each verdict and states the player's reach. Exit status: 0 every map
 playable (and, when judged, solved); 1 a map is bad or impossible; 2 bad usage; 3 no map
-bad or impossible, but at least one not decided.
+bad or impossible, but at least one not decided; 130 Ctrl-C; 143 SIGTERM (which ends the
+workers of ``--jobs`` too). An output closed or full changes no status: the lines nobody
+reads are dropped (:mod:`game.levels.closed_output`).
 
 ``solve MAP [--out SCRIPT] [--picture PNG] [--budget N] [--seconds S]`` searches for that
 route, writes it as an input script and draws it over the map; exit 0 when found, 1 when
@@ -36,6 +38,7 @@ checked 6 map(s): all playable; the player jumps 2.8 tiles high and 3.6 tiles ac
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import math
 import os
@@ -47,16 +50,19 @@ from pathlib import Path
 import pygame
 
 from game.levels.checking import Finding, MapReport, Options
+from game.levels.closed_output import flush_both, say, tell
 from game.levels.errors import LevelError, escaped
 from game.levels.loader import load_level
 from game.levels.outputs import image_suffix, unwritable, write_output, write_surface
 from game.levels.reach import limits_of, measure_limits, measure_reach
+from game.levels.reading import reason
 from game.levels.route_picture import draw_route
 from game.levels.shipped import LEVELS_DIR
-from game.levels.side_by_side import check_maps, usable_cores
+from game.levels.side_by_side import Terminated, check_maps, usable_cores
 from game.levels.solver import DEFAULT_BUDGET, Effort
 from game.levels.verdict import Kind, judge
 from game.sim.tuning import TICK_HZ, Tuning
+from game.sim.whole_numbers import NumberTextError, quoted, read_whole
 
 TILE_PX = 16  # the tile size the reach is given in (the shipped maps')
 
@@ -64,7 +70,9 @@ EXIT_OK = 0
 EXIT_BAD = 1  # a map is bad, or proven impossible
 EXIT_USAGE = 2
 EXIT_UNDECIDED = 3  # nothing bad or impossible, but some map's search was not decided
+MAX_COUNT_DIGITS = 12  # --budget and --jobs: more is a typo, not a plan
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for Ctrl-C
+EXIT_TERMINATED = 143  # 128 + SIGTERM
 
 
 def command_name(argv0: str | None = None) -> str:
@@ -80,18 +88,34 @@ def command_name(argv0: str | None = None) -> str:
     return name.removesuffix(".exe")
 
 
-def _maps(path: Path) -> Iterator[tuple[Path, str | None]]:
+def _maps_in(folder: Path) -> list[Path]:
+    """The ``.tmx`` maps anywhere under ``folder``, sorted. The folders are walked with a
+    list of folders still to look into, not by recursion, so a folder 1,200 levels deep is
+    no RecursionError; a link to a folder is not followed (it could lead back up)."""
+    found: list[Path] = []
+    waiting = [folder]
+    while waiting:
+        with os.scandir(waiting.pop()) as entries:
+            for entry in entries:
+                if entry.is_dir(follow_symlinks=False):
+                    waiting.append(Path(entry.path))
+                elif entry.name.endswith(".tmx"):
+                    found.append(Path(entry.path))
+    return sorted(found)
+
+
+def _maps(path: Path) -> Iterator[tuple[Path, tuple[str, str] | None]]:
     """The maps a command-line path stands for, or the path and why it stands for none."""
     try:
         is_folder = path.is_dir()
-        found = sorted(path.rglob("*.tmx")) if is_folder else []
+        found = _maps_in(path) if is_folder else []
     except (OSError, ValueError) as error:
-        yield path, f"{path}: the path cannot be read ({error}) — check it"
+        yield path, (f"the path cannot be read ({reason(error)})", "check it")
         return
     if not is_folder:
         yield path, None
     elif not found:
-        yield path, f"{path}: this folder holds no .tmx maps — give a map or a folder of maps"
+        yield path, ("this folder holds no .tmx maps", "give a map or a folder of maps")
     else:
         yield from ((map_path, None) for map_path in found)
 
@@ -130,29 +154,30 @@ def check(paths: list[Path], options: Options, output: str = "text", jobs: int =
     ``jobs``: how many maps to check at once (:mod:`game.levels.side_by_side`)."""
     found = [found for argument in paths or sorted(LEVELS_DIR.glob("*.tmx"))  # none: the
              for found in _maps(argument)]                                      # campaign
-    checked = check_maps([path for path, refusal in found if refusal is None], options, jobs)
     reports: list[MapReport] = []
-    for path, refusal in found:
-        if refusal is not None:
-            report = MapReport(path)
-            report.findings.append(_refused(path, refusal))
-        else:
-            report = next(checked)
-        reports.append(report)
-        if output == "text":
-            for finding in report.findings:
-                print(escaped(finding.text), flush=True)
+    with contextlib.closing(check_maps([path for path, refusal in found if refusal is None],
+                                       options, jobs)) as checked:  # closed: no worker left
+        for path, refusal in found:
+            if refusal is not None:
+                report = MapReport(path)
+                report.findings.append(_refused(path, refusal))
+            else:
+                report = next(checked)
+            reports.append(report)
+            if output == "text":
+                for finding in report.findings:
+                    say(escaped(finding.text))
     line, status = _summary(reports, options)
     if output == "json":
-        print(json.dumps({"maps": [r.as_json() for r in reports], "summary": line,
+        say(json.dumps({"maps": [r.as_json() for r in reports], "summary": escaped(line),
                           "status": status}, indent=1))
     else:
-        print(escaped(line))
+        say(escaped(line))
     return status
 
 
-def _refused(path: Path, text: str) -> Finding:
-    return Finding("error", text, "", text.split(": ", 1)[-1], "")
+def _refused(path: Path, refusal: tuple[str, str]) -> Finding:
+    return Finding.of("error", path, "", *refusal)
 
 
 def solve_command(path: Path, out: Path | None, picture: Path | None, effort: Effort,
@@ -162,15 +187,24 @@ def solve_command(path: Path, out: Path | None, picture: Path | None, effort: Ef
     for output, what in ((out, "the script"), (picture, "the picture")):
         problem = unwritable(output, what) if output is not None else None
         if problem is not None:
-            print(problem, file=sys.stderr)
+            tell(problem)
             return EXIT_BAD
     try:
         level = load_level(path, images=picture is not None)
     except LevelError as error:
-        print(error, file=sys.stderr)
+        tell(str(error))
         return EXIT_BAD
     verdict = judge(level, effort, command)
     solution = verdict.solution
+    status = EXIT_OK
+    if verdict.kind is Kind.SOLVED and solution is not None and out is not None:
+        # The route is written first: nothing after (the picture, a closed output) loses it.
+        script = solution.script()
+        failed = write_output(out, lambda tmp: tmp.write_text(script, encoding="utf-8"),
+                              "the script")
+        if failed is not None:
+            tell(failed)
+            status = EXIT_BAD
     if picture is not None:
         route = solution.route if solution is not None else []
         furthest = (solution.furthest if solution is not None and not solution.found
@@ -181,24 +215,21 @@ def solve_command(path: Path, out: Path | None, picture: Path | None, effort: Ef
         failed = write_output(picture, lambda tmp: write_surface(drawn, tmp, suffix),
                               "the picture", suffix)
         if failed is not None:
-            print(failed, file=sys.stderr)
-            return EXIT_BAD
+            tell(failed)
+            status = EXIT_BAD
     if verdict.kind is not Kind.SOLVED or solution is None:
         where = f"tile ({verdict.tile[0]},{verdict.tile[1]}): " if verdict.tile else ""
-        print(escaped(f"{path}: {where}{verdict.finding} — {verdict.advice}"), file=sys.stderr)
+        tell(escaped(f"{path}: {where}{verdict.finding} — {verdict.advice}"))
         return EXIT_BAD  # impossible or not decided: no route to write (the public form)
-    script = solution.script()
-    if out is not None:
-        failed = write_output(out, lambda tmp: tmp.write_text(script, encoding="utf-8"),
-                              "the script")
-        if failed is not None:
-            print(failed, file=sys.stderr)
-            return EXIT_BAD
-    else:
-        sys.stdout.write(script)
-    print(f"{path}: a route reaches the exit at tick {solution.exit_tick} "
-          f"({solution.exit_tick / TICK_HZ:.1f} s of play; {solution.moves_tried:,} moves "
-          "tried)", file=sys.stderr)
+    if status != EXIT_OK:
+        return status
+    if out is None and not say(solution.script(), end=""):
+        tell(f"{path}: the route could not be printed (the output is closed or full) — "
+             "give --out SCRIPT to write it to a file")
+        return EXIT_BAD
+    tell(f"{path}: a route reaches the exit at tick {solution.exit_tick} "
+         f"({solution.exit_tick / TICK_HZ:.1f} s of play; {solution.moves_tried:,} moves "
+         "tried)")
     return EXIT_OK
 
 
@@ -209,10 +240,10 @@ def reach_command(path: Path | None) -> int:
         try:
             tuning = tuning.with_map_properties(load_level(path).properties)
         except LevelError as error:
-            print(error, file=sys.stderr)
+            tell(str(error))
             return EXIT_BAD
     limits = limits_of(tuning) if path is None else measure_limits(tuning)
-    print(f"the player {measure_reach(tuning).describe(TILE_PX)}; {limits.describe()}")
+    say(f"the player {measure_reach(tuning).describe(TILE_PX)}; {limits.describe()}")
     return EXIT_OK
 
 
@@ -230,11 +261,11 @@ def types(write: bool) -> int:
 
     if write:
         for path in write_files():
-            print(f"{_shown(path)}: written")
+            say(f"{_shown(path)}: written")
         return 0
     stale = stale_files()
     for path in stale:
-        print(f"{_shown(path)}: out of date — run python -m game.levels types --write")
+        say(f"{_shown(path)}: out of date — run python -m game.levels types --write")
     return 1 if stale else 0
 
 
@@ -250,30 +281,45 @@ def _seconds(text: str) -> float:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run a command; Ctrl-C stops it with exit status 130 and one line, not a traceback."""
+    """Run a command; Ctrl-C stops it with exit status 130 and one line, not a traceback.
+    An output closed or full (``| head -1``, ``> /dev/full``) loses only the lines printed
+    (:mod:`game.levels.closed_output`): the command ends with the status it would have had."""
     try:
         if __name__ == "__main__":  # from here Ctrl-C is a KeyboardInterrupt, caught below
             signal.signal(signal.SIGINT, signal.default_int_handler)
         return _main(argv)
     except KeyboardInterrupt:
-        print("stopped by Ctrl-C", file=sys.stderr)
+        tell("stopped by Ctrl-C")
         return EXIT_INTERRUPTED
+    except Terminated:  # SIGTERM during a check of maps side by side: the workers end too
+        tell("stopped by SIGTERM")
+        return EXIT_TERMINATED
+    finally:
+        flush_both()  # an output closed or full ends the command quietly, with its status
 
 
 def _budget(text: str) -> int:
     """A positive whole number of moves, for argparse."""
-    if not text.isdigit() or len(text) > 12 or int(text) <= 0:
-        raise argparse.ArgumentTypeError(f"{text[:40]!r} is not a positive whole number of "
+    try:
+        value = read_whole(text, MAX_COUNT_DIGITS)
+    except NumberTextError:
+        value = 0
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"{quoted(text)} is not a positive whole number of "
                                          "moves")
-    return int(text)
+    return value
 
 
 def _jobs(text: str) -> int:
     """A positive whole number of maps at once, for argparse."""
-    if not text.isdigit() or len(text) > 12 or int(text) <= 0:
-        raise argparse.ArgumentTypeError(f"{text[:40]!r} is not a positive whole number of "
+    try:
+        value = read_whole(text, MAX_COUNT_DIGITS)
+    except NumberTextError:
+        value = 0
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"{quoted(text)} is not a positive whole number of "
                                          "maps")
-    return int(text)
+    return value
 
 
 def _add_search_options(parser: argparse.ArgumentParser, seconds_flags: list[str]) -> None:

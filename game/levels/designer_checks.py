@@ -16,17 +16,19 @@ What it teaches: an error names its place and says what happens in play, in Tile
 
 from __future__ import annotations
 
+import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from pathlib import Path
 
 from game.collision.aabb import Box
 from game.collision.free_place import nearest_free_place
 from game.levels.classes import OBJECT_CLASSES
-from game.levels.errors import Findings, LevelError
+from game.levels.errors import Findings, LevelError, Place, object_place, tile_place
 from game.levels.layers import walk_layers
 from game.levels.loader import load_level
 from game.levels.tiledxml import read_tiled_xml
 from game.sim.level import Level
+from game.sim.whole_numbers import NumberTextError, read_whole
 from game.sim.world import World
 
 SAME_PLACE_PX = 0.5  # a respawn place this close to the flag's is the same place
@@ -64,11 +66,19 @@ def _checkpoints(level: Level) -> Iterator[Finding]:
         if abs(place.x - standing.x) > SAME_PLACE_PX or abs(place.y - standing.y) > SAME_PLACE_PX:
             col = int(flag.x // level.grid.tile_w)
             row = int(flag.y // level.grid.tile_h)
-            yield ("error", f"tile ({col},{row})", "a player coming back to this Checkpoint "
+            yield ("error", tile_place(col, row), "a player coming back to this Checkpoint "
                    "would stand inside Solid tiles, so the game moves it to the nearest free "
                    f"place, ({place.x:g}, {place.y:g}) instead of ({standing.x:g}, "
                    f"{standing.y:g})", "move the Checkpoint so that its bottom edge rests on "
                    "the ground with open space above it")
+
+
+def _object_place(node: ET.Element) -> Place:
+    """An object's place, its id read as the loader read it (the map has loaded)."""
+    try:
+        return object_place(read_whole(node.get("id", "")), node.get("name", ""))
+    except NumberTextError:
+        return Place(f"object #{node.get('id', '?')} '{node.get('name', '')}'")
 
 
 def _hidden_objects(path: Path) -> Iterator[Finding]:
@@ -85,7 +95,7 @@ def _hidden_objects(path: Path) -> Iterator[Finding]:
         for node in layer.node.iter("object"):
             cls = (node.get("type") or node.get("class") or "").strip()
             if cls.lower() in known:
-                yield ("warning", f"object #{node.get('id', '?')} '{node.get('name', '')}'",
+                yield ("warning", _object_place(node),
                        f"this {cls} is on the hidden layer '{layer.name}' (its eye is off in "
                        "the Layers panel), yet the game plays it as if it were shown",
                        "show the layer if the object belongs in the level, or delete it if "

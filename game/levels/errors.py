@@ -90,7 +90,7 @@ def excerpt(value: object) -> str:
     return f"'{escaped(text[:MAX_QUOTED_CHARS // 2])}...' ({len(text):,} characters)"
 
 
-def _clip(text: str) -> str:
+def clipped(text: str) -> str:
     """``text`` escaped and cut to MAX_PART_CHARS, saying so: the last guard against a
     forged line or a flood, whatever the message was built from."""
     if len(text) > MAX_PART_CHARS:
@@ -98,11 +98,57 @@ def _clip(text: str) -> str:
     return escaped(text)
 
 
-def _sentence(path: Path | str, where: str, problem: str, fix: str, warning: bool) -> str:
-    where, problem = _clip(where), _clip(problem)
+def sentence(path: Path | str, where: str, problem: str, fix: str, warning: bool) -> str:
+    where, problem = clipped(where), clipped(problem)
     place = f"{where}: " if where else ""
     label = "warning: " if warning else ""
-    return f"{_clip(str(path))}: {place}{label}{problem} — {_clip(fix)}"
+    return f"{clipped(str(path))}: {place}{label}{problem} — {clipped(fix)}"
+
+
+class Place(str):
+    """Where a finding is, as its message says it (``object #3 'Hero'``), with the parts a
+    program needs kept apart: the object's id, the tile, the layer's name. They are set
+    from the map's structure where the finding is made, never read back out of the text,
+    so a layer named ``object #2 tile (7,3)`` points at no object and no tile.
+
+    >>> place = tile_place(7, 3, "ground")
+    >>> str(place), place.tile, place.layer, place.object_id
+    ("tile (7,3) in layer 'ground'", (7, 3), 'ground', None)
+    >>> layer_place("object #2 tile (7,3)").object_id is None
+    True
+    """
+
+    object_id: int | None
+    tile: tuple[int, int] | None
+    layer: str | None
+
+    def __new__(cls, text: str, object_id: int | None = None,
+                tile: tuple[int, int] | None = None, layer: str | None = None) -> Place:
+        place = super().__new__(cls, text)
+        place.object_id, place.tile, place.layer = object_id, tile, layer
+        return place
+
+    def __reduce__(self) -> tuple[object, ...]:  # to a worker process and back
+        return Place, (str(self), self.object_id, self.tile, self.layer)
+
+
+def object_place(object_id: int, name: str) -> Place:
+    return Place(f"object #{object_id} '{name}'", object_id=object_id)
+
+
+def layer_place(name: str) -> Place:
+    return Place(f"layer '{name}'", layer=name)
+
+
+def tile_place(col: int, row: int, layer: str | None = None) -> Place:
+    text = f"tile ({col},{row})" + (f" in layer '{layer}'" if layer is not None else "")
+    return Place(text, tile=(col, row), layer=layer)
+
+
+def within(where: str, text: str) -> Place:
+    """``text``, a longer place inside ``where``, keeping the parts of ``where``."""
+    return Place(text, getattr(where, "object_id", None), getattr(where, "tile", None),
+                 getattr(where, "layer", None))
 
 
 class LevelError(Exception):
@@ -126,7 +172,7 @@ class LevelError(Exception):
         self.problem = problem
         self.fix = fix
         self.others = tuple(others)
-        super().__init__(_sentence(path, where, problem, fix, warning=False))
+        super().__init__(sentence(path, where, problem, fix, warning=False))
 
     def all_errors(self) -> tuple[LevelError, ...]:
         """This error and the others found with it, in the order they were found."""
@@ -143,7 +189,7 @@ class LevelWarning:
     fix: str
 
     def __str__(self) -> str:
-        return _sentence(self.path, self.where, self.problem, self.fix, warning=True)
+        return sentence(self.path, self.where, self.problem, self.fix, warning=True)
 
 
 class Findings:

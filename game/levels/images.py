@@ -182,8 +182,12 @@ _DECODED: WeakKeyDictionary[Findings, dict[Path, pygame.Surface]] = WeakKeyDicti
 def load_image(path: Path, findings: Findings, where: str, what: str,
                budget: PixelBudget | None = None) -> pygame.Surface:
     """The image at ``path``, decoded from the very bytes whose header was measured; fail
-    with a sentence if it cannot be used. Each image is decoded once per level read."""
+    with a sentence if it cannot be used. Each image is read, decoded and counted against
+    the level's pixels once per level read: the game, which checks a tileset's image and
+    then hands it to pytmx, spends the same budget as the checker, which only checks it."""
     known = _DECODED.setdefault(findings, {})
+    if path in known:
+        return known[path]
     name = f"the {what} {escaped(path.name)}"
     data = read_level_file(path, findings, where, name.removeprefix("the "), MAX_IMAGE_BYTES,
                            FIX_IMAGE, missing=(f"{name} is missing ({escaped(str(path))})",
@@ -198,8 +202,6 @@ def load_image(path: Path, findings: Findings, where: str, what: str,
         findings.fail(where, f"{name} says it is a {width}x{height} {kind}; the game reads "
                       f"images of 1 to {MAX_IMAGE_PX} pixels a side", FIX_IMAGE)
     charge_pixels(findings, where, path, width, height, budget)
-    if path in known:
-        return known[path]
     try:  # the same bytes, typed by what they were measured as: no other decoder is asked
         image = pygame.image.load(io.BytesIO(data), f"image.{kind.lower()}")
     except (pygame.error, OSError, ValueError, MemoryError) as error:

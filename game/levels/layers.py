@@ -25,7 +25,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from game.levels.attributes import number
-from game.levels.errors import Findings
+from game.levels.errors import Findings, Place, layer_place
 
 LEAF_TAGS = ("layer", "objectgroup", "imagelayer")
 MAX_GROUP_DEPTH = 32
@@ -50,8 +50,8 @@ class LayerNode:
         return self.node.tag
 
     @property
-    def place(self) -> str:
-        return f"layer '{self.name}'"
+    def place(self) -> Place:
+        return layer_place(self.name)
 
 
 def _walk(parent: ET.Element, findings: Findings, offset: tuple[float, float],
@@ -64,7 +64,7 @@ def _walk(parent: ET.Element, findings: Findings, offset: tuple[float, float],
         if child.tag not in (*LEAF_TAGS, "group"):
             continue
         name = child.get("name", "")
-        where = f"layer '{name}'"
+        where = layer_place(name)
         ox = offset[0] + number(child.attrib, "offsetx", findings, where, 0.0)
         oy = offset[1] + number(child.attrib, "offsety", findings, where, 0.0)
         if not (abs(ox) <= MAX_OFFSET_PX and abs(oy) <= MAX_OFFSET_PX):  # inf and nan too

@@ -42,7 +42,7 @@ from game.levels import pytmx_bridge
 from game.levels.budget import MAX_ANIMATED_CELLS
 from game.levels.classes import LEVEL, TILE_KINDS
 from game.levels.entities import build_entities
-from game.levels.errors import Findings, LevelError, excerpt
+from game.levels.errors import Findings, LevelError, excerpt, layer_place
 from game.levels.header import MAX_TOTAL_CELLS, MapHeader, read_header
 from game.levels.images import check_image
 from game.levels.layers import LayerNode, walk_layers
@@ -178,7 +178,7 @@ def _warn_layer_properties(root: ET.Element, findings: Findings) -> None:
     for node in root.iter():
         if node.tag not in ("layer", "objectgroup", "imagelayer", "group"):
             continue
-        place = f"layer '{node.get('name', '')}'"
+        place = layer_place(node.get("name", ""))
         for name in read_properties(node, findings, place):
             if name in LEVEL_PROPERTY_NAMES:
                 findings.warn(place, f"property '{name}' on a layer does nothing; the game "

@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 
 from game.collision.aabb import Box
 from game.levels.attributes import number, parse_number, whole
-from game.levels.errors import Findings, excerpt
+from game.levels.errors import Findings, Place, excerpt, object_place, within
 from game.levels.layers import LayerNode
 from game.levels.properties import Value, class_name, class_of, read_properties
 from game.levels.templates import Templates
@@ -53,8 +53,8 @@ class MapObject:
     points: tuple[tuple[float, float], ...] = ()  # a polyline's or polygon's, in map pixels
 
     @property
-    def place(self) -> str:
-        return f"object #{self.id} '{self.name}'"
+    def place(self) -> Place:
+        return object_place(self.id, self.name)
 
     @property
     def is_point(self) -> bool:
@@ -71,8 +71,9 @@ def _shape(node: ET.Element) -> str:
 def read_object(node: ET.Element, layer: LayerNode, tilesets: Tilesets,
                 templates: Templates, findings: Findings) -> MapObject:
     """Read one ``<object>`` of ``layer``."""
-    object_id = whole(node.attrib, "id", findings, f"an object on {layer.place}", 0)
-    where = f"object #{object_id} '{node.get('name', '')}'"
+    object_id = whole(node.attrib, "id", findings, within(layer.place,
+                                                          f"an object on {layer.place}"), 0)
+    where = object_place(object_id, node.get("name", ""))
     node = templates.apply(node, where)
     x, y, w, h, rotation = (number(node.attrib, name, findings, where, 0.0)
                             for name in ("x", "y", "width", "height", "rotation"))

@@ -94,7 +94,8 @@ def refusal(path: Path) -> str | None:
     """Why ``path`` must never be replaced by an output of this run, or None: a symbolic
     link (writing through it would change a file elsewhere, replacing it would break the
     link), a file this run has read (a map, a tileset, an image, a script: an output written
-    there would destroy the input), or a folder that is not there (no folder is made).
+    there would destroy the input), a folder that is not there (no folder is made), or
+    anything but a regular file (a rename over ``/dev/null`` would replace the device).
 
     >>> import tempfile
     >>> folder = Path(tempfile.mkdtemp())
@@ -108,6 +109,9 @@ def refusal(path: Path) -> str | None:
             return "it is a symbolic link"
         if not Path(os.path.abspath(path)).parent.is_dir():
             return "its folder does not exist"
+        if path.exists() and not path.is_file():  # a rename would replace a device or pipe
+            return ("it is a folder" if path.is_dir()
+                    else "it is not a regular file (a pipe or a device?)")
     except (OSError, ValueError):
         return None  # a name the system refuses: the write itself will say so
     if was_read(path):

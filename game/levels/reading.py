@@ -125,7 +125,8 @@ def _read_pipe(descriptor: int, max_bytes: int, what: str) -> bytes:
 
 def read_bounded(path: Path, max_bytes: int, what: str, *, pipes: bool = False,
                  updated: bool = False, too_big_fix: str = "use a smaller file",
-                 missing: tuple[str, str] | None = None) -> bytes:
+                 missing: tuple[str, str] | None = None,
+                 not_regular_fix: str = FIX_REGULAR) -> bytes:
     """The bytes of the regular file at ``path``, at most ``max_bytes``; else a
     :class:`ReadProblem` whose problem names ``what`` (``"the input script"``).
 
@@ -139,19 +140,19 @@ def read_bounded(path: Path, max_bytes: int, what: str, *, pipes: bool = False,
     except (FileNotFoundError, NotADirectoryError):
         raise ReadProblem(*(missing or (f"{what} does not exist", FIX_MISSING))) from None
     except IsADirectoryError:
-        raise ReadProblem(f"{what} is a folder, not a file", FIX_REGULAR) from None
+        raise ReadProblem(f"{what} is a folder, not a file", not_regular_fix) from None
     except (OSError, ValueError) as error:
         raise ReadProblem(f"{what} cannot be opened ({reason(error)})", FIX_READ) from None
     too_big = ReadProblem(f"{what} is larger than {size_text(max_bytes)}", too_big_fix)
     try:
         status = os.fstat(descriptor)
         if stat.S_ISDIR(status.st_mode):
-            raise ReadProblem(f"{what} is a folder, not a file", FIX_REGULAR)
+            raise ReadProblem(f"{what} is a folder, not a file", not_regular_fix)
         if pipes and stat.S_ISFIFO(status.st_mode):
             data = _read_pipe(descriptor, max_bytes, what)
         elif not stat.S_ISREG(status.st_mode):
             raise ReadProblem(f"{what} is not a regular file (a pipe or a device?)",
-                              FIX_REGULAR)
+                              not_regular_fix)
         elif status.st_size > max_bytes:
             raise too_big
         else:
@@ -188,14 +189,15 @@ def read_text(path: Path, max_bytes: int, what: str, *, pipes: bool = False,
 
 def read_level_file(path: Path, findings: Findings, where: str, what: str, max_bytes: int,
                     too_big_fix: str = "use a smaller file",
-                    missing: tuple[str, str] | None = None) -> bytes:
+                    missing: tuple[str, str] | None = None,
+                    not_regular_fix: str = FIX_REGULAR) -> bytes:
     """The bytes of the regular file at ``path`` (at most ``max_bytes``); fail with one
     sentence naming ``what`` if it is missing (``missing``: the problem and fix to say
     then), not a regular file, or too large."""
     findings.opened(path)
     try:
         return read_bounded(path, max_bytes, f"the {what}", too_big_fix=too_big_fix,
-                            missing=missing)
+                            missing=missing, not_regular_fix=not_regular_fix)
     except ReadProblem as problem:
         findings.fail(where, problem.problem, problem.fix)
 

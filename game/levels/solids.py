@@ -28,7 +28,7 @@ from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import TileGrid
 from game.levels.budget import FIX_SHAPES, MAX_SHAPES
 from game.levels.classes import TILE_KINDS
-from game.levels.errors import Findings
+from game.levels.errors import Findings, tile_place
 from game.levels.header import MapHeader
 from game.levels.layers import LayerNode
 from game.levels.tiledata import FLIPPED_D, FLIPPED_H, FLIPPED_V, split
@@ -110,7 +110,7 @@ def build_grid(header: MapHeader, layers: Sequence[tuple[LayerNode, Sequence[int
             row, col = divmod(first, header.cols)
             cells = sum(uses[raw] for raw in unknown)
             more = f" ({cells} cells in all)" if cells > 1 else ""
-            findings.error(f"tile ({col},{row}) in {layer.place}",
+            findings.error(tile_place(col, row, layer.name),
                            f"tile id {split(gids[first])[0]} is in none of the map's "
                            f"tilesets{more}",
                            "erase those tiles, or add back the tileset they came from")

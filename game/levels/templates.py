@@ -27,7 +27,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 from game.levels.attributes import whole
-from game.levels.errors import Findings
+from game.levels.errors import Findings, within
 from game.levels.paths import Sandbox, resolve
 from game.levels.tiledata import FLAG_BITS, split
 from game.levels.tiledxml import read_tiled_xml, refuse_json
@@ -70,7 +70,7 @@ class Templates:
         refuse_json(self.findings, where, "template", reference)
         path = resolve(reference, self.map_dir, self.root, self.findings, where, "template")
         if path not in self.cache:
-            self.cache[path] = self._read(path, f"{where} (template {reference})")
+            self.cache[path] = self._read(path, within(where, f"{where} (template {reference})"))
         return merge(self.cache[path], node)
 
     def _read(self, path: Path, where: str) -> ET.Element:

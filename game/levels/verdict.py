@@ -143,9 +143,11 @@ def replay_proof(level: Level, script: InputScript) -> tuple[bool, int]:
     return False, campaign.ticks
 
 
-def judge_proof(level: Level, script_path: Path) -> Verdict:
-    """SOLVED when the recorded script wins the level; else a finding about the script."""
-    script = InputScript.load(script_path)
+def judge_proof(level: Level, script_path: Path, script: InputScript | None = None
+                ) -> Verdict:
+    """SOLVED when the recorded script wins the level; else a finding about the script.
+    ``script``: the script at ``script_path``, when the caller has read it already."""
+    script = InputScript.load(script_path) if script is None else script
     won, ticks = replay_proof(level, script)
     if won:
         return Verdict(Kind.SOLVED, None, f"solved: the recorded win {script_path.name} "

@@ -27,6 +27,8 @@ from dataclasses import dataclass, field
 from enum import Enum
 from pathlib import Path
 
+from game.sim.whole_numbers import NumberTextError, read_whole
+
 
 class Action(Enum):
     LEFT = "left"
@@ -77,9 +79,12 @@ def _parse_line(text: str, where: str) -> InputEvent:
     if not (tick_text.isascii() and tick_text.isdigit()):
         raise InputScriptError(f"{where}: the tick must be a whole number >= 0, "
                                f"got {_excerpt(tick_text)}")
-    if len(tick_text.lstrip("0")) > MAX_TICK_DIGITS:
+    try:
+        tick = read_whole(tick_text, MAX_TICK_DIGITS)
+    except NumberTextError:
         raise InputScriptError(f"{where}: the tick {_excerpt(tick_text)} is more than "
-                               f"{MAX_TICK_DIGITS} digits long — no run lasts that long")
+                               f"{MAX_TICK_DIGITS} digits long — no run lasts that long"
+                               ) from None
     if change[:1] not in ("+", "-"):
         raise InputScriptError(f"{where}: the action must start with + or -, "
                                f"got {_excerpt(change)}")
@@ -89,7 +94,7 @@ def _parse_line(text: str, where: str) -> InputEvent:
         raise InputScriptError(
             f"{where}: unknown action {_excerpt(change[1:])} — use one of {ACTION_NAMES}"
         ) from None
-    return InputEvent(int(tick_text), change[0] == "+", action)
+    return InputEvent(tick, change[0] == "+", action)
 
 
 @dataclass
