@@ -134,7 +134,7 @@ def test_the_split_matches_qt() -> None:
 @pytest.mark.parametrize("path", [PROJECT_FILE, PROJECT_FILE_1_8], ids=["1.9+", "1.8"])
 def test_the_commands_play_and_check_the_open_map_from_any_folder(path: Path) -> None:
     commands = json.loads(path.read_text(encoding="utf-8"))["commands"]
-    entry = "-I -m game.levels.tiled_commands"
+    entry = "-I -m game.tools.tiled_commands"
     assert [c["arguments"] for c in commands] == [f"{entry} play %mapfile",
                                                   f"{entry} check %mapfile"]
     # No path of one machine's: Python from the PATH (python.exe on Windows too); Tiled puts

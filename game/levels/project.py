@@ -20,11 +20,11 @@ differ from what this module generates. Edit the classes in Python, never in Til
                                    reads with ``TiledMap(custom_property_filename=...)``
 ================================  ========================================================
 
-The commands run ``python -I -m game.levels.tiled_commands play|check %mapfile`` with
+The commands run ``python -I -m game.tools.tiled_commands play|check %mapfile`` with
 ``python`` from the ``PATH`` and the project's parent folder as the working folder. Tiled
 quotes the map's path, so folders whose names hold spaces work; ``-I`` (isolated mode)
 imports only the installed game, never a ``game/`` or ``argparse.py`` from the working
-folder, and :mod:`game.levels.tiled_commands` refuses a path Tiled split into pieces.
+folder, and :mod:`game.tools.tiled_commands` refuses a path Tiled split into pieces.
 
 What it teaches: generated files that are committed must be checked for staleness, or the
 copy drifts from its source.
@@ -52,7 +52,7 @@ PROPERTY_TYPES_FILE = LEVELS_DIR / "propertytypes.json"
 
 PYTHON = "python"  # the first on the PATH: start Tiled where the game's Python is active
 COMPATIBLE_WITH_TILED_1_8 = 1080  # Tiled's "compatibility version" for files 1.8 reads
-ENTRY = "-I -m game.levels.tiled_commands"  # isolated: the installed game, nothing else
+ENTRY = "-I -m game.tools.tiled_commands"  # isolated: the installed game, nothing else
 COMMANDS = (("Play this level", f"{ENTRY} play %mapfile", "F5"),
             ("Check this level", f"{ENTRY} check %mapfile", "F6"))
 

@@ -2,7 +2,7 @@
 
 Where it sits: the project's commands (F5 **Play this level**, F6 **Check this level**,
 written into the project files by :mod:`game.levels.project`) run
-``python -I -m game.levels.tiled_commands play %mapfile`` (or ``check``). This module takes
+``python -I -m game.tools.tiled_commands play %mapfile`` (or ``check``). This module takes
 the pieces Tiled hands over, makes sure they are exactly one existing ``.tmx`` file, and
 then plays it (``python -m game --level MAP --watch``) or checks it
 (``python -m game.levels check MAP``). It writes nothing.
@@ -67,7 +67,7 @@ def main(argv: list[str] | None = None) -> int:
     """``play PATH`` or ``check PATH``, exactly as Tiled passes them."""
     args = sys.argv[1:] if argv is None else argv
     if not args or args[0] not in VERBS:
-        print("usage: python -I -m game.levels.tiled_commands {play,check} MAP.tmx "
+        print("usage: python -I -m game.tools.tiled_commands {play,check} MAP.tmx "
               "(run by the Tiled project's commands)", file=sys.stderr)
         return EXIT_USAGE
     try:
