@@ -5,7 +5,9 @@ written into the project files by :mod:`game.levels.project`) run
 ``python -I -m game.tools.tiled_commands play %mapfile`` (or ``check``). This module takes
 the pieces Tiled hands over, makes sure they are exactly one existing ``.tmx`` file, and
 then plays it (``python -m game --level MAP --watch``) or checks it
-(``python -m game.levels check MAP``). It writes nothing.
+(``python -m game.levels check MAP``). It writes nothing of its own, and nothing into the
+project or the map's folder (playing keeps the player's progress in the user's data folder,
+as the game always does).
 
 What it teaches: a program that builds a command line as text must quote, and a quote can
 be broken. Tiled substitutes ``%mapfile`` as ``"PATH"`` into one line of text and splits
