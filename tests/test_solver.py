@@ -356,7 +356,7 @@ def test_the_tiled_extension_parses() -> None:
 def test_the_tiled_extension_reads_what_the_checker_writes(
         tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     script = EXTENSION.read_text(encoding="utf-8")
-    assert '"check", "--format",\n                                               "json"' in script
+    assert '"game.levels", "check", "--format", "json"' in script
     level = walled_in_copy(tmp_path)
     check([level], Options(solve=False), "json")
     document = json.loads(capsys.readouterr().out)

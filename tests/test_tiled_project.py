@@ -10,6 +10,7 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
+from typing import Any
 
 import pytest
 import pytmx
@@ -67,30 +68,144 @@ def test_the_tiled_1_8_project_reads_the_object_types_and_keeps_the_enums() -> N
     assert "compatibilityVersion" not in project
 
 
+def split_command(line: str) -> list[str]:
+    """Qt 5.15's ``QProcess::splitCommand``, which Tiled 1.8 uses to turn a command line into
+    arguments: double quotes group, and three in a row stand for one quote character."""
+    args: list[str] = []
+    piece, quotes, quoted = "", 0, False
+    for char in line:
+        if char == '"':
+            quotes += 1
+            if quotes == 3:
+                quotes = 0
+                piece += char
+            continue
+        if quotes:
+            if quotes == 1:
+                quoted = not quoted
+            quotes = 0
+        if not quoted and char.isspace():
+            if piece:
+                args.append(piece)
+                piece = ""
+        else:
+            piece += char
+    if piece:
+        args.append(piece)
+    return args
+
+
+def tiled_runs(command: dict[str, Any], mapfile: Path, project: Path) -> tuple[list[str], Path]:
+    """The arguments and working folder Tiled 1.8 runs a project command with
+    (``Command::finalCommand``: the executable quoted, then every variable replaced by its
+    value in double quotes, then the line split)."""
+    values = {"%mapfile": str(mapfile), "%mappath": str(mapfile.parent),
+              "%projectpath": str(project)}
+    line = f'"{command["command"]}" {command["arguments"]}'
+    folder = command["workingDirectory"]
+    for name, value in values.items():
+        line = line.replace(name, f'"{value}"')
+        folder = folder.replace(name, value)
+    return split_command(line), Path(folder)
+
+
+def run_like_tiled(command: dict[str, Any], mapfile: Path,
+                   project: Path) -> subprocess.CompletedProcess[str]:
+    args, folder = tiled_runs(command, mapfile, project)
+    assert args[0] == "python"  # from the PATH: here, the Python the tests run in
+    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
+    return subprocess.run([sys.executable, *args[1:]], capture_output=True, text=True,
+                          timeout=60, check=False, cwd=folder, env=env)
+
+
+def files_in(folder: Path) -> dict[str, bytes]:
+    return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*"))
+            if p.is_file() and "__pycache__" not in p.parts}
+
+
+def test_the_split_matches_qt() -> None:
+    assert split_command('"python" -m x "/a b/c.tmx" --w') == ["python", "-m", "x",
+                                                                "/a b/c.tmx", "--w"]
+    assert split_command('"/d/x" --report README.md "y.tmx"') == ["/d/x", "--report",
+                                                                  "README.md", "y.tmx"]
+    assert split_command('a """b"""') == ["a", '"b"']
+
+
 @pytest.mark.parametrize("path", [PROJECT_FILE, PROJECT_FILE_1_8], ids=["1.9+", "1.8"])
 def test_the_commands_play_and_check_the_open_map_from_any_folder(path: Path) -> None:
     commands = json.loads(path.read_text(encoding="utf-8"))["commands"]
-    assert [c["arguments"] for c in commands] == ["-m game --level %mapfile --watch",
-                                                  "-m game.levels check %mapfile"]
+    entry = "-I -m game.tools.tiled_commands"
+    assert [c["arguments"] for c in commands] == [f"{entry} play %mapfile",
+                                                  f"{entry} check %mapfile"]
     # No path of one machine's: Python from the PATH (python.exe on Windows too); Tiled puts
     # %mapfile in quotes, and the working folder is not split into words.
     assert all(c["command"] == "python" for c in commands)
     assert all(c["workingDirectory"] == "%projectpath/.." for c in commands)
 
 
-def test_the_check_command_works_from_a_folder_with_spaces(tmp_path: Path) -> None:
+def copied_project(tmp_path: Path) -> Path:
     folder = tmp_path / "my levels folder"
     shutil.copytree(LEVELS_DIR, folder / "levels")
     shutil.copytree(LEVELS_DIR.parent / "assets", folder / "assets")
+    (folder / "README.md").write_text("the project's own README\n", encoding="utf-8")
+    return folder
+
+
+def test_the_check_command_works_from_a_folder_with_spaces(tmp_path: Path) -> None:
+    folder = copied_project(tmp_path)
     command = json.loads(PROJECT_FILE.read_text(encoding="utf-8"))["commands"][1]
-    mapfile = folder / "levels" / "01-first-steps.tmx"
-    arguments = command["arguments"].replace("%mapfile", str(mapfile)).split()
-    arguments[arguments.index(str(mapfile).split()[0]):] = [str(mapfile)]  # Tiled's quotes
-    result = subprocess.run([sys.executable, *arguments, "--no-solve"], capture_output=True,
-                            text=True, timeout=60, check=False,
-                            cwd=str(folder / "levels" / ".."))
+    mapfile = folder / "levels" / "showcase" / "fast-fall.tmx"
+    result = run_like_tiled(command, mapfile, folder / "levels")
     assert result.returncode == 0, result.stdout + result.stderr
-    assert result.stdout.startswith("checked 1 map(s): all playable")
+    assert result.stdout.startswith("checked 1 map(s): all playable, 1 solved")
+
+
+@pytest.mark.parametrize("which", [0, 1], ids=["play", "check"])
+def test_a_map_name_with_a_quote_is_refused_not_split_into_options(tmp_path: Path,
+                                                                   which: int) -> None:
+    """Tiled puts the path in quotes and splits the line again, so a quote in the name
+    makes options of the rest: the command refuses such a name and writes nothing."""
+    folder = copied_project(tmp_path)
+    name = '01-first-steps.tmx" --headless --ticks 1 --report README.md --record "x.tmx'
+    mapfile = folder / "levels" / name
+    shutil.copy(LEVELS_DIR / "01-first-steps.tmx", mapfile)
+    before = files_in(folder)
+    command = json.loads(PROJECT_FILE.read_text(encoding="utf-8"))["commands"][which]
+    args, _ = tiled_runs(command, mapfile, folder / "levels")
+    assert args[args.index("--report") + 1] == "README.md"  # what Tiled passes: split
+    result = run_like_tiled(command, mapfile, folder / "levels")
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr.count("\n") == 1
+    assert "map: Tiled split the map's path into 8 pieces" in result.stderr, result.stderr
+    assert "— rename the map without" in result.stderr
+    assert files_in(folder) == before
+
+
+@pytest.mark.parametrize("which", [0, 1], ids=["play", "check"])
+def test_the_commands_run_no_code_from_the_working_folder(tmp_path: Path, which: int) -> None:
+    """A folder holding its own ``game/`` package and ``argparse.py`` (a pack laid out like
+    the project) runs none of them: the commands import the installed game only."""
+    folder = copied_project(tmp_path)
+    marker = tmp_path / "ran"
+    plant = f"open({str(marker)!r}, 'a').write(__name__ + '\\n')\n"
+    for top in (folder, folder / "levels"):
+        (top / "game" / "levels").mkdir(parents=True)
+        for module in ("__init__.py", "__main__.py", "levels/__init__.py",
+                       "levels/__main__.py", "levels/tiled_commands.py"):
+            (top / "game" / module).write_text(plant, encoding="utf-8")
+        (top / "argparse.py").write_text(plant, encoding="utf-8")
+    mapfile = folder / "levels" / "no such map.tmx"  # refused at once: nothing plays
+    if which == 1:
+        mapfile = folder / "levels" / "showcase" / "fast-fall.tmx"
+    command = json.loads(PROJECT_FILE.read_text(encoding="utf-8"))["commands"][which]
+    env_before = files_in(folder)
+    result = run_like_tiled(command, mapfile, folder / "levels")
+    assert not marker.exists(), marker.read_text(encoding="utf-8")
+    if which == 1:
+        assert result.returncode == 0 and "1 solved" in result.stdout, result.stderr
+    else:
+        assert result.returncode == 2 and "no such map file" in result.stderr, result.stderr
+    assert files_in(folder) == env_before
 
 
 def test_pytmx_reads_the_exported_property_types() -> None:

@@ -20,9 +20,11 @@ differ from what this module generates. Edit the classes in Python, never in Til
                                    reads with ``TiledMap(custom_property_filename=...)``
 ================================  ========================================================
 
-The commands run ``python`` from the ``PATH`` with the project's parent folder as the
-working folder, and Tiled quotes the map's path (``%mapfile``), so they work on Windows
-too and from folders whose names hold spaces.
+The commands run ``python -I -m game.tools.tiled_commands play|check %mapfile`` with
+``python`` from the ``PATH`` and the project's parent folder as the working folder. Tiled
+quotes the map's path, so folders whose names hold spaces work; ``-I`` (isolated mode)
+imports only the installed game, never a ``game/`` or ``argparse.py`` from the working
+folder, and :mod:`game.tools.tiled_commands` refuses a path Tiled split into pieces.
 
 What it teaches: generated files that are committed must be checked for staleness, or the
 copy drifts from its source.
@@ -35,11 +37,13 @@ from __future__ import annotations
 
 import json
 import xml.etree.ElementTree as ET
+from functools import partial
 from pathlib import Path
 from typing import Any
 
 from game.levels import LEVELS_DIR
 from game.levels.classes import CLASSES, Member, TiledClass
+from game.levels.outputs import replace_atomically
 
 PROJECT_FILE = LEVELS_DIR / "tile-hopper.tiled-project"
 PROJECT_FILE_1_8 = LEVELS_DIR / "tile-hopper-1.8.tiled-project"
@@ -48,8 +52,9 @@ PROPERTY_TYPES_FILE = LEVELS_DIR / "propertytypes.json"
 
 PYTHON = "python"  # the first on the PATH: start Tiled where the game's Python is active
 COMPATIBLE_WITH_TILED_1_8 = 1080  # Tiled's "compatibility version" for files 1.8 reads
-COMMANDS = (("Play this level", "-m game --level %mapfile --watch", "F5"),
-            ("Check this level", "-m game.levels check %mapfile", "F6"))
+ENTRY = "-I -m game.tools.tiled_commands"  # isolated: the installed game, nothing else
+COMMANDS = (("Play this level", f"{ENTRY} play %mapfile", "F5"),
+            ("Check this level", f"{ENTRY} check %mapfile", "F6"))
 
 
 def enum_name(cls: TiledClass, member: Member) -> str:
@@ -153,5 +158,5 @@ def write_files() -> list[Path]:
     changed = stale_files()
     for path, text in generated_files().items():
         if path in changed:
-            path.write_text(text, encoding="utf-8")
+            replace_atomically(path, partial(Path.write_text, data=text, encoding="utf-8"))
     return changed

@@ -2,28 +2,59 @@
  * Tile Hopper: check the open map and list what the checker finds in Tiled's Issues panel.
  *
  * Tiled loads this file when the project in levels/ is open (its "extensionsPath" is
- * "extensions"). It adds "Check Tile Hopper Map" (Ctrl+Shift+F6) to the Map menu. The action
- * saves the map, runs `python -m game.levels check --format json MAP` in the folder above
- * levels/ (Tiled's Process API, Tiled 1.8), and turns each finding into an entry of the
- * Issues panel: errors with tiled.error, warnings and "not decided" with tiled.warn.
- * Activating an entry selects the object it names (object #ID) or the tile it names
- * (tile (X,Y)) and centres the view there.
+ * "extensions") and its extensions are enabled. It adds "Check Tile Hopper Map"
+ * (Ctrl+Shift+F6) to the Map menu. The action saves the map, runs
+ *     python -I -m game.levels check --format json --budget 1000 -- MAP
+ * (Tiled's Process API, Tiled 1.8) and turns each finding into an entry of the Issues
+ * panel: errors with tiled.error, warnings and "not decided" with tiled.warn. Activating an
+ * entry selects the object it names (object #ID) or the tile it names (tile (X,Y)) and
+ * centres the view there.
  *
- * Tiled's interface waits while the check runs (a search for a route can take seconds);
- * the Console says when it starts and how it ended.
+ * A map may come from anyone, so nothing of its folder runs: Python starts in isolated mode
+ * (-I: neither the working folder nor PYTHON* variables nor the user's site-packages reach
+ * sys.path, so a game/ package or an argparse.py beside the map is never imported), in
+ * Tiled's own folder, with the map's path as one argument after "--". Only a Python with the
+ * game installed (pip install -e .) is used. The check writes nothing.
+ *
+ * Tiled's interface waits while the check runs, so the search for a route is bounded by
+ * work: SEARCH_BUDGET moves, which answers in a few seconds even on the busiest map the
+ * game's limits allow. A map the search does not decide within it gets a "not decided"
+ * warning; F6 (Check this level) runs the full search without making Tiled wait.
  */
-
 /* global tiled, Process, Qt */
 
 var PYTHONS = tiled.platform === "windows" ? ["python.exe", "py.exe"] : ["python3", "python"];
+var SEARCH_BUDGET = 1000;  // moves the search may try: about 1 s on a shipped level, about
+                           // 10 s of CPU on the busiest map the limits allow
+var NOT_INSTALLED = /No module named '?game\b/;  // Python's words when the game is not installed
+var SHOWN_CHARS = 2000;  // the most of a message the Issues panel is given
 
-function projectFolder(mapFile) {
-    // The map is somewhere below levels/; the game is run from the folder above levels/.
-    var parts = mapFile.split("/");
-    var levels = parts.lastIndexOf("levels");
-    if (levels <= 0)
-        return parts.slice(0, -1).join("/");
-    return parts.slice(0, levels).join("/");
+function checkerArguments(mapFile) {
+    return ["-I", "-m", "game.levels", "check", "--format", "json",
+            "--budget", String(SEARCH_BUDGET), "--", mapFile];
+}
+
+function escapedChar(c) {
+    var code = c.charCodeAt(0);
+    if (c === "\n") return "\\n";
+    if (c === "\r") return "\\r";
+    if (c === "\t") return "\\t";
+    var hex = code.toString(16);
+    return code <= 0xff ? "\\x" + ("0" + hex).slice(-2) : "\\u" + ("000" + hex).slice(-4);
+}
+
+// Controls (C0, C1), bidi marks, embeddings, overrides and isolates, zero-width and other
+// format characters, line and paragraph separators and the byte order mark.
+var UNSAFE = new RegExp("[\\u0000-\\u001f\\u007f-\\u009f\\u00ad\\u061c\\u180e" +
+                        "\\u200b-\\u200f\\u2028-\\u202e\\u2060-\\u206f\\ufeff]", "g");
+
+function shown(text) {
+    // What Tiled's panels may show: every character that could hide, reorder or split
+    // the text written as an escape, and at most SHOWN_CHARS of it.
+    var plain = String(text);
+    if (plain.length > SHOWN_CHARS)
+        plain = plain.slice(0, SHOWN_CHARS) + "... (" + plain.length + " characters)";
+    return plain.replace(UNSAFE, escapedChar);
 }
 
 function findObject(layers, id) {
@@ -70,21 +101,25 @@ function selector(map, finding) {
     };
 }
 
-function runCheck(mapFile, folder) {
+function runCheck(mapFile) {
+    // The first Python on the PATH with the game installed; null if none has it.
+    var tried = [];
     for (var i = 0; i < PYTHONS.length; ++i) {
         var process = new Process();
-        process.workingDirectory = folder;
-        var status = process.exec(PYTHONS[i], ["-m", "game.levels", "check", "--format",
-                                               "json", mapFile], false);
+        process.workingDirectory = tiled.applicationDirPath;  // never the map's folder
+        var status = process.exec(PYTHONS[i], checkerArguments(mapFile), false);
         var out = process.readStdOut();
         var err = process.readStdErr();
         process.close();
-        if (status >= 0 && out.length > 0)
-            return { status: status, out: out, err: err };
-        if (status >= 0)  // Python ran but printed nothing: usage or a crash
-            return { status: status, out: "", err: err };
+        if (status < 0)
+            continue;  // no such program
+        if (out.length === 0 && NOT_INSTALLED.test(err)) {
+            tried.push(PYTHONS[i]);
+            continue;
+        }
+        return { status: status, out: out, err: err, python: PYTHONS[i] };
     }
-    return null;
+    return { status: -1, out: "", err: "", tried: tried };
 }
 
 var checkAction = tiled.registerAction("TileHopperCheck", function () {
@@ -96,31 +131,37 @@ var checkAction = tiled.registerAction("TileHopperCheck", function () {
     if (map.modified)
         tiled.trigger("Save");
     var mapFile = map.fileName;
-    tiled.log("Checking " + mapFile + " (reading it, then searching for a route)...");
-    var result = runCheck(mapFile, projectFolder(mapFile));
-    if (result === null) {
-        tiled.error("Tile Hopper: Python was not found; start Tiled from a shell where the " +
-                    "game's Python is active", function () {});
+    tiled.log(shown("Checking " + mapFile + " (reading it, then searching for a route " +
+                    "of at most " + SEARCH_BUDGET + " moves)..."));
+    var result = runCheck(mapFile);
+    if (result.status < 0) {
+        tiled.error(result.tried.length === 0
+            ? "Tile Hopper: Python was not found; start Tiled from a shell where the game's " +
+              "Python is active"
+            : "Tile Hopper: the game is not installed for " + result.tried.join(" or ") +
+              "; run pip install -e . in the game's folder, or start Tiled from a shell " +
+              "where the game's Python is active", function () {});
         return;
     }
     var report;
     try {
         report = JSON.parse(result.out);
     } catch (error) {
-        tiled.error("Tile Hopper: the checker did not answer in JSON (exit status " +
-                    result.status + "): " + result.err.trim(), function () {});
+        tiled.error(shown("Tile Hopper: the checker (" + result.python + ") did not answer " +
+                          "in JSON (exit status " + result.status + "): " +
+                          result.err.trim()), function () {});
         return;
     }
     report.maps.forEach(function (checked) {
         checked.findings.forEach(function (finding) {
-            var text = finding.text;
+            var text = shown(finding.text);
             if (finding.severity === "error")
                 tiled.error(text, selector(map, finding));
             else
                 tiled.warn(text, selector(map, finding));
         });
     });
-    tiled.log(report.summary);
+    tiled.log(shown(report.summary));
 });
 checkAction.text = "Check Tile Hopper Map";
 checkAction.shortcut = "Ctrl+Shift+F6";

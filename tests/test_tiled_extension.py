@@ -1,0 +1,168 @@
+"""The Tiled extension (levels/extensions/tile-hopper-check.js), run by Node.js against a
+stand-in for Tiled's ``tiled`` and ``Process`` objects: each ``Process.exec`` the extension
+makes really runs, with the program, arguments and working folder it asked for, so these
+tests run exactly what Tiled would."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from game.levels import LEVELS_DIR
+from tests.maps import write_tmx
+
+NODE = shutil.which("node") or shutil.which("nodejs")
+EXTENSION = LEVELS_DIR / "extensions" / "tile-hopper-check.js"
+BASE_PYTHON = getattr(sys, "_base_executable", sys.executable)  # the venv's base: no game
+
+pytestmark = pytest.mark.skipif(NODE is None, reason="Node.js is not installed")
+
+# Tiled as far as the extension uses it. PROGRAMS maps the names the extension runs
+# (python3, python) to real programs; a name not there fails to start, as in Tiled.
+TILED = r"""
+const fs = require("fs"), cp = require("child_process"), vm = require("vm");
+const [script, mapFile, programsJson, appDir] = process.argv.slice(2);
+const programs = JSON.parse(programsJson);
+const calls = [], issues = [], logs = [];
+let action = null;
+globalThis.Qt = { rect: (x, y, w, h) => ({ x, y, w, h }) };
+globalThis.tiled = {
+    platform: "linux", applicationDirPath: appDir, mapEditor: null,
+    activeAsset: { isTileMap: true, modified: false, fileName: mapFile, layers: [] },
+    registerAction: (id, callback) => { action = callback; return {}; },
+    extendMenu: () => {}, trigger: () => {},
+    alert: (text) => issues.push(["alert", text]),
+    log: (text) => logs.push(text),
+    error: (text) => issues.push(["error", text]),
+    warn: (text) => issues.push(["warn", text]),
+};
+globalThis.Process = class {
+    constructor() { this.workingDirectory = ""; this.out = ""; this.err = ""; }
+    exec(name, args) {
+        calls.push({ name, args, cwd: this.workingDirectory });
+        if (!(name in programs)) return -2;
+        const run = cp.spawnSync(programs[name], args, { cwd: this.workingDirectory || undefined,
+                                                         encoding: "utf8" });
+        this.out = run.stdout; this.err = run.stderr;
+        return run.status;
+    }
+    readStdOut() { return this.out; }
+    readStdErr() { return this.err; }
+    close() {}
+};
+vm.runInThisContext(fs.readFileSync(script, "utf8"), { filename: script });
+action();
+process.stdout.write(JSON.stringify({ calls, issues, logs }));
+"""
+
+
+def run_extension(tmp_path: Path, map_file: Path, programs: dict[str, str]) -> dict[str, Any]:
+    """Press Map > Check Tile Hopper Map with ``map_file`` open; what the extension ran and
+    what it put in the Issues panel and the Console."""
+    harness = tmp_path / "tiled-stand-in.js"
+    harness.write_text(TILED, encoding="utf-8")
+    tiled_folder = tmp_path / "tiled-app"
+    tiled_folder.mkdir(exist_ok=True)
+    assert NODE is not None
+    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
+    result = subprocess.run([NODE, str(harness), str(EXTENSION), str(map_file),
+                             json.dumps(programs), str(tiled_folder)], capture_output=True,
+                            text=True, timeout=120, check=False, env=env)
+    assert result.returncode == 0, result.stderr
+    answer: dict[str, Any] = json.loads(result.stdout)
+    return answer
+
+
+def hostile_pack(tmp_path: Path, folder: str = "levels") -> tuple[Path, Path]:
+    """A downloaded pack: a map with no Player in ``pack/FOLDER``, beside which (and in the
+    pack's top) lie a ``game/`` package that says "solved" and an ``argparse.py``, each
+    leaving a marker file when imported."""
+    pack = tmp_path / "pack"
+    levels = pack / folder
+    levels.mkdir(parents=True)
+    map_file = write_tmx(levels, ["          D", "###########"], name="no-player.tmx")
+    marker = tmp_path / "ran"
+    plant = f"open({str(marker)!r}, 'a').write(__name__ + '\\n')\n"
+    fake = ('print(\'{"maps": [{"path": "x", "verdict": "solved", "findings": []}], '
+            '"summary": "checked 1 map(s): all playable, 1 solved", "status": 0}\')\n')
+    for top in (pack, levels):
+        (top / "game" / "levels").mkdir(parents=True)
+        (top / "game" / "__init__.py").write_text(plant, encoding="utf-8")
+        (top / "game" / "__main__.py").write_text(plant + fake, encoding="utf-8")
+        (top / "game" / "levels" / "__init__.py").write_text(plant, encoding="utf-8")
+        (top / "game" / "levels" / "__main__.py").write_text(plant + fake, encoding="utf-8")
+        (top / "argparse.py").write_text(plant, encoding="utf-8")
+    return pack, map_file
+
+
+def files_in(folder: Path) -> dict[str, bytes]:
+    return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*"))
+            if p.is_file() and "__pycache__" not in p.parts}
+
+
+@pytest.mark.parametrize("folder", ["levels", "downloads"])
+def test_a_map_from_a_pack_runs_none_of_the_packs_code(tmp_path: Path, folder: str) -> None:
+    pack, map_file = hostile_pack(tmp_path, folder)
+    before, project_before = files_in(pack), files_in(LEVELS_DIR)
+    answer = run_extension(tmp_path, map_file, {"python3": sys.executable})
+    assert not (tmp_path / "ran").exists(), (tmp_path / "ran").read_text(encoding="utf-8")
+    errors = [text for kind, text in answer["issues"] if kind == "error"]
+    assert any("this map has no Player" in text for text in errors), answer["issues"]
+    call = answer["calls"][0]
+    assert call["args"][0] == "-I" and call["args"][-2:] == ["--", str(map_file)]
+    assert Path(call["cwd"]) == tmp_path / "tiled-app"  # never the map's folder
+    assert files_in(pack) == before and files_in(LEVELS_DIR) == project_before
+
+
+def test_the_check_uses_the_python_that_has_the_game(tmp_path: Path) -> None:
+    probe = subprocess.run([BASE_PYTHON, "-I", "-c", "import game"], capture_output=True,
+                           cwd=tmp_path, check=False)
+    if probe.returncode == 0:
+        pytest.skip("the base Python has the game installed too")
+    _, map_file = hostile_pack(tmp_path)
+    answer = run_extension(tmp_path, map_file,
+                           {"python3": BASE_PYTHON, "python": sys.executable})
+    assert [c["name"] for c in answer["calls"]] == ["python3", "python"]
+    assert any("this map has no Player" in text for _, text in answer["issues"])
+    answer = run_extension(tmp_path, map_file, {"python3": BASE_PYTHON})
+    assert [kind for kind, _ in answer["issues"]] == ["error"]
+    assert "the game is not installed for python3" in answer["issues"][0][1]
+    assert not (tmp_path / "ran").exists()
+
+
+def test_the_search_in_tiled_is_bounded_by_a_budget_of_moves(tmp_path: Path) -> None:
+    """Tiled waits while the check runs, so its search tries at most 1,000 moves; the
+    moving-parts level needs about 3,000, and is left not decided with the bound named."""
+    answer = run_extension(tmp_path, LEVELS_DIR / "04-moving-parts.tmx",
+                           {"python3": sys.executable})
+    assert answer["calls"][0]["args"][6:8] == ["--budget", "1000"]
+    warnings = [text for kind, text in answer["issues"] if kind == "warn"]
+    assert len(warnings) == 1 and "not decided" in warnings[0], answer["issues"]
+    assert "its budget of 1,000 moves (1,00" in warnings[0]
+
+
+def test_the_issues_panel_gets_every_text_escaped(tmp_path: Path) -> None:
+    """Whatever the checker prints, no newline, control or bidi override reaches Tiled."""
+    forged = {"maps": [{"path": "a.tmx", "verdict": "bad", "findings": [
+        {"severity": "error", "text": "a.tmx: layer 'x\nchecked 1 map(s): all playable':"
+                                      " \u202etxt.exe\x1b[2J", "object_id": None,
+         "tile": None, "layer": None}]}],
+        "summary": "checked 1 map(s)\r\u2066", "status": 1}
+    fake = tmp_path / "fake-python"
+    fake.write_text(f"#!{sys.executable}\nimport sys\n"
+                    f"sys.stdout.write({json.dumps(forged, ensure_ascii=False)!r})\n",
+                    encoding="utf-8")
+    fake.chmod(0o755)
+    answer = run_extension(tmp_path, LEVELS_DIR / "01-first-steps.tmx", {"python3": str(fake)})
+    shown = [text for _, text in answer["issues"]] + answer["logs"]
+    assert ("a.tmx: layer 'x\\nchecked 1 map(s): all playable': \\u202etxt.exe\\x1b[2J"
+            in shown)
+    assert "checked 1 map(s)\\r\\u2066" in shown
+    assert all(text.isprintable() for text in shown), shown
