@@ -52,7 +52,7 @@ import pygame
 from game.levels.checking import Finding, MapReport, Options
 from game.levels.closed_output import flush_both, say, tell
 from game.levels.errors import LevelError, escaped
-from game.levels.loader import load_level
+from game.levels.loader import files_read, load_level
 from game.levels.outputs import image_suffix, unwritable, write_output, write_surface
 from game.levels.reach import limits_of, measure_limits, measure_reach
 from game.levels.reading import reason
@@ -183,7 +183,9 @@ def _refused(path: Path, refusal: tuple[str, str]) -> Finding:
 def solve_command(path: Path, out: Path | None, picture: Path | None, effort: Effort,
                   command: str) -> int:
     """``solve``: judge the map, write the script and the picture; return the exit status.
-    An output that plainly cannot be written is said before the search, not after it."""
+    An output that plainly cannot be written is said before the search, not after it, and
+    so is one that would replace a file the map uses (the map, a tileset, an image)."""
+    files_read(path)  # each file the map uses, images included, is now known as an input
     for output, what in ((out, "the script"), (picture, "the picture")):
         problem = unwritable(output, what) if output is not None else None
         if problem is not None:

@@ -166,7 +166,8 @@ def _named(path: Path) -> str:
 
 def unwritable(path: Path, what: str) -> str | None:
     """The sentence to print if ``what`` plainly cannot be written at ``path`` (its folder
-    is missing, or is not one we may write in, or the path is a folder), else None.
+    is missing, or is not one we may write in, the path is a folder, or :func:`refusal`
+    forbids it: a link, a device, a file this run has read), else None.
 
     Asked before a long search, so a mistyped path costs nothing; a write can still fail
     later (a full disk, a name too long), which :func:`write_output` reports. Unlike the
@@ -182,7 +183,10 @@ def unwritable(path: Path, what: str) -> str | None:
         elif path.is_dir():
             reason = "it is a folder"
         else:
-            return None
+            refused = refusal(path)
+            if refused is None:
+                return None
+            reason = refused
     except (OSError, ValueError):
         return None  # a name the system refuses: the write will say so
     return f"{_named(path)}: {what} cannot be written ({reason}) — check the path"
