@@ -436,3 +436,31 @@ def test_a_repaint_that_would_change_what_collides_is_not_written(
     error = one_line(capsys.readouterr().err)
     assert error.startswith(f"{path}: tile (0,4): repainting would change what collides there")
     assert path.read_bytes() == before
+
+
+def test_a_map_saved_again_while_it_was_being_repainted_is_not_overwritten(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    path = make_pack(tmp_path / "pack")
+    saved = map_text(title="Saved from Tiled while the tool ran")
+    paint = terrain.paint
+
+    def paint_then_save(map_path: Path, folder: Path) -> terrain.Painting:
+        painting = paint(map_path, folder)
+        map_path.write_text(saved, encoding="utf-8")
+        return painting
+
+    monkeypatch.setattr(terrain, "paint", paint_then_save)
+    assert terrain.main([str(path)]) == 1
+    error = one_line(capsys.readouterr().err)
+    assert error.startswith(f"{path}: the repainted map cannot be written (it changed on the "
+                            "disk while it was being repainted)")
+    assert path.read_text(encoding="utf-8") == saved
+
+
+def test_a_folder_without_maps_is_bad_usage(tmp_path: Path,
+                                            capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "notes.txt").write_text("not a map", encoding="utf-8")
+    assert terrain.main([str(tmp_path)]) == 2
+    assert one_line(capsys.readouterr().err) == (
+        f"{tmp_path}: the folder holds no .tmx maps — give a map or a folder of maps")

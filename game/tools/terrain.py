@@ -155,6 +155,7 @@ def repaint_rows(rows: Sequence[Sequence[int]], tiles_first: int | None,
     """
     height, width = len(rows), len(rows[0]) if rows else 0
 
+    @cache  # a layer holds few different gids: each is looked at once
     def kind(gid: int) -> str:
         """``"ground"``, ``"plank"`` or ``""`` (anything else) for one gid."""
         if not gid or gid & FLIP_BITS:
@@ -167,8 +168,10 @@ def repaint_rows(rows: Sequence[Sequence[int]], tiles_first: int | None,
             return ""
         return "ground" if tile_id in ground else "plank" if tile_id in planks else ""
 
+    kinds = [[kind(gid) for gid in line] for line in rows]
+
     def of(wanted: str, col: int, row: int) -> bool:
-        return 0 <= row < height and 0 <= col < width and kind(rows[row][col]) == wanted
+        return 0 <= row < height and 0 <= col < width and kinds[row][col] == wanted
 
     def ground(col: int, row: int) -> bool:
         if row >= height or col < 0 or col >= width:
@@ -424,6 +427,8 @@ def collision(level: Level) -> Collision:
 
 def _same_collision(path: Path, before: Level, after: Level) -> None:
     """Refuse the repaint if any cell collides otherwise than it did."""
+    if list(before.grid.shapes()) == list(after.grid.shapes()):
+        return  # the usual case, quickly: the same shapes, cell by cell, in the same order
     old, new = collision(before), collision(after)
     changed = sorted((row, col) for col, row in old.keys() | new.keys()
                      if old.get((col, row)) != new.get((col, row)))
