@@ -464,3 +464,11 @@ def test_a_folder_without_maps_is_bad_usage(tmp_path: Path,
     assert terrain.main([str(tmp_path)]) == 2
     assert one_line(capsys.readouterr().err) == (
         f"{tmp_path}: the folder holds no .tmx maps — give a map or a folder of maps")
+
+
+def test_the_designers_guide_gives_the_terrain_tools_limits() -> None:
+    guide = (LEVELS_DIR / "README.md").read_text(encoding="utf-8")
+    section = guide[guide.index("### Repainting a map in one go"):guide.index("## Places")]
+    assert f"at most {terrain.MAX_MAPS:,} maps, among at most " \
+           f"{terrain.MAX_FOLDER_ENTRIES:,} names" in section.replace("\n  ", " ")
+    assert f"{terrain.EXIT_INTERRUPTED} after Ctrl-C" in section

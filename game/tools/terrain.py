@@ -118,7 +118,7 @@ FLIP_BITS = 0xF0000000  # Tiled's flip flags in the high bits of a gid
 MAX_MAPS = 1_000  # maps one run repaints at most; a folder with more is given in parts
 MAX_FOLDER_ENTRIES = 100_000  # names looked at in the folders given, at most
 
-NOT_MARKUP_RE = re.compile(r"<!--.*?-->|<!\[CDATA\[.*?\]\]>", re.S)  # never rewritten
+NOT_MARKUP_RE = re.compile(r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>", re.S)  # left as is
 TILESET_RE = re.compile(r"<tileset\b[^>]*?(/?)>")
 LAYER_RE = re.compile(r"(<layer\b[^>]*>(?:(?!</layer>|<layer\b).)*?<data\b([^>]*)>)(.*?)"
                       r"(</data>)", re.S)
@@ -140,6 +140,10 @@ class TerrainError(Exception):
 
 class UsageError(Exception):
     """A command line that names no maps to repaint; the message is the line to print."""
+
+
+class Changed(Refused):
+    """The map on the disk is no longer the one that was read and repainted."""
 
 
 def repaint_rows(rows: Sequence[Sequence[int]], tiles_first: int | None,
@@ -210,7 +214,8 @@ def cells_text(count: int) -> str:
 # -- The text: only the CSV of tile layers, and one tileset line, are rewritten -------------
 
 def _outside_markup(text: str) -> list[tuple[int, int]]:
-    """The spans of ``text`` that are comments or CDATA: never rewritten."""
+    """The spans of ``text`` that are comments, CDATA or processing instructions: what
+    looks like a layer or a tileset there is not one, and is never rewritten."""
     return [match.span() for match in NOT_MARKUP_RE.finditer(text)]
 
 
@@ -263,10 +268,16 @@ def add_tileset(text: str, source: str, firstgid: int) -> str:
     """
     skipped = _outside_markup(text)
     tilesets = [match for match in TILESET_RE.finditer(text) if not _in(skipped, match.start())]
+    unlike_tiled = ValueError("the map's tilesets are not written as Tiled writes them")
+    if not tilesets:
+        raise unlike_tiled
     last = tilesets[-1]
     end = last.end()
     if not last.group(1):  # a tileset kept in the map: it ends at its closing tag
-        end = text.index("</tileset>", end) + len("</tileset>")
+        closing = text.find("</tileset>", end)
+        if closing < 0:
+            raise unlike_tiled
+        end = closing + len("</tileset>")
     indent = text[text.rfind("\n", 0, last.start()) + 1:last.start()]
     indent = indent if not indent.strip() else " "
     return (f'{text[:end]}\n{indent}<tileset firstgid="{firstgid}" '
@@ -475,7 +486,11 @@ def paint(path: Path, folder: Path) -> Painting:
     added = None
     if terrain_first is None and tiles_first is not None:
         added = _terrain_to_add(path, root, tiles_first, firstgid)
-        painted = add_tileset(painted, added, firstgid)
+        try:
+            painted = add_tileset(painted, added, firstgid)
+        except ValueError as error:
+            raise TerrainError(sentence(path, f"{error}, so {excerpt(added)} cannot be added "
+                                        "to them", FIX_TERRAIN)) from None
     new_data = painted.encode(encoding, errors="xmlcharrefreplace")
     _same_collision(path, before, _load(path, new_data, repainted=True))
     return Painting(path, new_data, cells, added, firstgid if added else 0, identity=identity)
@@ -488,7 +503,7 @@ def write(painting: Painting) -> None:
 
     def put(tmp: Path) -> None:
         if identity_of(path) != painting.identity:
-            raise Refused("it changed on the disk while it was being repainted")
+            raise Changed("it changed on the disk while it was being repainted")
         tmp.write_bytes(painting.data)
 
     try:
@@ -496,6 +511,7 @@ def write(painting: Painting) -> None:
     except (OSError, ValueError) as error:
         full = isinstance(error, OSError) and error.errno in DISK_FULL
         fix = ("free some space" if full else "run the tool again" if isinstance(
+            error, Changed) else "run the tool again on this map alone" if isinstance(
             error, Refused) else "check that the folder may be written to")
         raise TerrainError(sentence(path, f"the repainted map cannot be written "
                                     f"({reason(error)}), so it is left as it was", fix)) \
@@ -560,12 +576,20 @@ def maps_given(argument: Path) -> list[tuple[Path, Path]]:
     return [(map_path, argument) for map_path in found]
 
 
+def _given_path(text: str) -> Path:
+    """A path from the command line; an empty one, which would stand for the current
+    folder and every map below it, names nothing."""
+    if not text:
+        raise argparse.ArgumentTypeError("an empty path names no map")
+    return Path(text)
+
+
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="python -m game.tools.terrain",
         description="Repaint the ground of Tiled maps with the game's terrain tiles, as "
                     "Tiled's Terrain Brush would, without changing what collides.")
-    parser.add_argument("maps", nargs="+", type=Path, metavar="MAP_OR_FOLDER",
+    parser.add_argument("maps", nargs="+", type=_given_path, metavar="MAP_OR_FOLDER",
                         help="a .tmx map, or a folder: every .tmx map in it")
     parser.add_argument("--check", action="store_true",
                         help="write nothing; say what would change, and exit 1 if anything "
