@@ -472,3 +472,17 @@ def test_the_designers_guide_gives_the_terrain_tools_limits() -> None:
     assert f"at most {terrain.MAX_MAPS:,} maps, among at most " \
            f"{terrain.MAX_FOLDER_ENTRIES:,} names" in section.replace("\n  ", " ")
     assert f"{terrain.EXIT_INTERRUPTED} after Ctrl-C" in section
+
+
+def test_a_tileset_outside_the_levels_sandbox_is_refused_and_the_map_left_alone(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    shared = tmp_path / "shared"  # beside the pack, but no project's assets/ folder
+    make_pack(shared).unlink()
+    path = make_pack(tmp_path / "pack", map_text(tilesets=(
+        (1, "../shared/tiles.tsx"), (TERRAIN_FIRST, "../shared/terrain.tsx"))), names=())
+    before = path.read_bytes()
+    assert terrain.main([str(path)]) == 1
+    error = one_line(capsys.readouterr().err)
+    assert error.startswith(f"{path}: tileset '../shared/tiles.tsx': ")
+    assert "leads outside the level's folder" in error
+    assert path.read_bytes() == before
