@@ -114,6 +114,7 @@ def test_painting_terrain_where_a_tileset_is_missing_says_so_and_changes_nothing
     before = path.read_text(encoding="utf-8")
     assert terrain.main([str(path)]) == 1
     error = capsys.readouterr().err
-    assert error.startswith(f"{path}: the tileset ../assets/banner.tsx cannot be read")
+    assert error.startswith(f"{path}: tileset '../assets/banner.tsx': the tileset file "
+                            "banner.tsx does not exist")
     assert error.count("\n") == 1 and "Traceback" not in error
     assert path.read_text(encoding="utf-8") == before

@@ -220,13 +220,13 @@ def _check_animated_cells(layers: Sequence[TileLayer], animations: Mapping[int, 
 
 
 def _read(path: Path, findings: Findings, images: bool, check_images: bool,
-          tuning: Tuning, folder: Path | None) -> Level:
+          tuning: Tuning, folder: Path | None, data: bytes | None = None) -> Level:
     """Every step of loading, in order of trust; raises LevelError at the end if any step
     recorded an error."""
     # 1. The file (if it lies in its own sandbox), and the grid its header describes.
     sandbox = sandbox_for(path, folder)
     check_map_file(path, sandbox, findings)
-    root = read_tiled_xml(path, "map", findings)
+    root = read_tiled_xml(path, "map", findings, data=data)
     header = read_header(root, findings)
 
     # 2. Tilesets and tile layers: what collides where.
@@ -268,16 +268,19 @@ def _read(path: Path, findings: Findings, images: bool, check_images: bool,
 
 
 def load_level(path: Path | str, *, images: bool = False, tuning: Tuning | None = None,
-               folder: Path | None = None) -> Level:
+               folder: Path | None = None, data: bytes | None = None) -> Level:
     """Read a map; raise :class:`LevelError` if the game cannot play it.
 
     ``images=True`` also loads and verifies the tile images (it needs a display mode set);
     without it no image file is opened, which is what headless runs want. ``tuning`` gives
     the defaults of the classes (an Enemy's speed, a point Player's hitbox). ``folder`` is
-    where the map's files must be (default: see :mod:`game.levels.paths`).
+    where the map's files must be (default: see :mod:`game.levels.paths`). ``data`` is
+    the map's text when it is not yet in the file at ``path`` (the terrain tool loads a
+    repainted map before it writes it); the map's tilesets and templates are still read
+    from beside ``path``.
     """
     path = Path(path)
-    return _read(path, Findings(path), images, images, tuning or Tuning(), folder)
+    return _read(path, Findings(path), images, images, tuning or Tuning(), folder, data)
 
 
 def check_level(path: Path | str, folder: Path | None = None) -> Findings:

@@ -70,10 +70,19 @@ def _sniff(data: bytes, findings: Findings, where: str, kind: Kind) -> None:
                       "open the map in Tiled and save it again")
 
 
-def read_tiled_xml(path: Path, kind: Kind, findings: Findings, where: str = "") -> ET.Element:
+def read_tiled_xml(path: Path, kind: Kind, findings: Findings, where: str = "",
+                   data: bytes | None = None) -> ET.Element:
     """Parse ``path`` and return its root element, which must be a ``<map>``,
-    ``<tileset>`` or ``<template>`` as ``kind`` says."""
-    data = _read_bytes(path, findings, where, kind)
+    ``<tileset>`` or ``<template>`` as ``kind`` says. ``data``, when given, is what the
+    file would hold (a map not written yet), checked and parsed instead of the file."""
+    if data is None:
+        data = _read_bytes(path, findings, where, kind)
+    else:
+        refuse_json(findings, where, kind, path.name)
+        if len(data) > MAX_FILE_BYTES:
+            findings.fail(where, f"the {kind} would be larger than "
+                          f"{MAX_FILE_BYTES // 2**20} MB", "split the level into smaller "
+                          "maps, or use base64-zlib tile data")
     _sniff(data, findings, where, kind)
     try:
         root = ET.fromstring(data)
