@@ -140,6 +140,7 @@ def test_main_writes_every_sound_readable_by_everyone(tmp_path: Path,
                                                       sounds: dict[str, bytes]) -> None:
     monkeypatch.setattr(synth, "SOUNDS", tmp_path / "sounds")
     monkeypatch.setattr(synth, "synthesise_all", lambda: sounds)
+    (tmp_path / "sounds").mkdir()  # the sounds' folder is the project's: the tool makes none
     synth.main()
     written = {path.name: path for path in (tmp_path / "sounds").iterdir()}
     assert set(written) == set(sounds)

@@ -169,7 +169,8 @@ def test_an_unwritable_screenshot_says_so_in_one_line(tmp_path: Path,
     target = tmp_path / "missing-folder" / "x.png"
     assert main(["--scene", "overlap", "--screenshot", str(target)]) == 1
     err = capsys.readouterr().err
-    assert "cannot save" in err and len(err.strip().splitlines()) == 1
+    assert "its folder does not exist" in err and len(err.strip().splitlines()) == 1
+    assert not target.parent.exists()  # no folder is made
 
 
 # --- the testbed ----------------------------------------------------------------------------
