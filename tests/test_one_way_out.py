@@ -157,3 +157,46 @@ def test_a_folder_that_is_not_there_is_an_error_and_is_not_made(tmp_path: Path) 
     ran = call_main(cli.main, ["--headless", "--ticks", "2", "--report", missing])
     assert ran.returncode == 1 and "does not exist" in ran.stderr
     assert not (tmp_path / "no").exists()
+
+
+def _refused_before_the_run(ran_status: int, err: str, kept: dict[Path, bytes],
+                            never_written: Path, says: str) -> None:
+    assert ran_status == 1, err
+    assert "Traceback" not in err and len(err.strip().splitlines()) == 1, err
+    assert says in err, err
+    assert {path: path.read_bytes() for path in kept} == kept
+    assert not never_written.exists()  # the run never started, so no output was written
+
+
+@pytest.mark.parametrize(("option", "target", "says"), [
+    ("--screenshot", "levels/01-first-steps.tmx", "--screenshot names the level (--level)"),
+    ("--report", "assets/tiles.png", "--report names a file the level uses"),
+    ("--record", "levels/02-over-the-gaps.tmx", "the level that follows it (next_level)"),
+    ("--report", "levels/../levels/01-first-steps.tmx", "names the level (--level)"),
+])
+def test_an_output_that_is_a_file_the_level_uses_is_refused_before_the_run(
+        pack: Path, option: str, target: str, says: str) -> None:
+    level, kept = pack / "levels" / "01-first-steps.tmx", pack / target
+    before = {kept: kept.read_bytes(), level: level.read_bytes()}
+    other = pack / "record.txt" if option != "--record" else pack / "report.json"
+    other_option = "--record" if option != "--record" else "--report"
+    ran = call_main(cli.main, ["--headless", "--level", level, "--ticks", "3",
+                               option, kept, other_option, other])
+    _refused_before_the_run(ran.returncode, ran.stderr, before, other, says)
+
+
+def test_a_recording_named_like_its_script_is_refused_before_the_run(pack: Path) -> None:
+    script, report = pack / "win.txt", pack / "report.json"
+    ran = call_main(cli.main, ["--headless", "--level", pack / "levels" / "01-first-steps.tmx",
+                               "--inputs", script, "--record", pack / "." / "win.txt",
+                               "--report", report])
+    _refused_before_the_run(ran.returncode, ran.stderr, {script: script.read_bytes()}, report,
+                            "--record names the input script (--inputs)")
+
+
+def test_two_outputs_that_are_one_file_are_refused_before_the_run(tmp_path: Path) -> None:
+    out = tmp_path / "out.json"
+    ran = call_main(cli.main, ["--headless", "--ticks", "3", "--report", out,
+                               "--record", tmp_path / "." / "out.json"])
+    _refused_before_the_run(ran.returncode, ran.stderr, {}, out,
+                            "--record and --report name the same file")

@@ -32,6 +32,7 @@ from pathlib import Path
 
 import pygame
 
+from game.app.clashes import clashes, level_inputs
 from game.app.display import EXIT_NO_WINDOW, GAME_INSTEAD, GAME_WINDOW, open_window
 from game.app.files import (
     FileProblem,
@@ -150,6 +151,19 @@ def _output_problems(args: argparse.Namespace) -> list[str]:
             and (problem := output_problem(path)) is not None]
 
 
+def _clashes(args: argparse.Namespace, level: Level) -> list[str]:
+    """Every output that names a file the run reads (the level, a file it uses, the input
+    script) or the same file as another output; asked before the first tick."""
+    outputs = [(option, path) for option in OUTPUT_OPTIONS
+               if (path := getattr(args, option)) is not None]
+    if not outputs:
+        return []
+    inputs = level_inputs(level, given=args.level is not None)
+    if args.inputs is not None:
+        inputs.append(("the input script (--inputs)", args.inputs))
+    return clashes(outputs, inputs)
+
+
 def _open_display(headless: bool, program: str) -> str | None:
     """Start the display: the game's window, or a hidden one for a headless screenshot.
     None when it is open, else the sentence to end with (see :mod:`game.app.display`)."""
@@ -194,6 +208,8 @@ def run(args: argparse.Namespace, play_in_window: Callable[[Run], int],
         # overlay's query log is kept only while the overlay is on.
         measure = Measure(penetration=args.report is not None, queries=bool(args.debug))
         campaign = Campaign(first_level, loader=loader, measure=measure)
+        if clashing := _clashes(args, campaign.world.level):
+            return fail("\n".join(clashing), EXIT_BAD_FILE)
         game_run = Run(campaign, script, args)
         status = run_headless(game_run) if args.headless else play_in_window(game_run)
         return EXIT_BAD_FILE if game_run.output_failed else status
