@@ -109,6 +109,28 @@ def test_a_device_given_as_input_script_is_refused(
         pytest.skip(f"{device} is not on this system")
     status, err = outcome(cli.main, ["--headless", "--ticks", "5", "--inputs", device], capsys)
     assert_one_sentence(status, err, 1)
+    assert "Tiled" not in err  # an input script is not a file Tiled saves
+
+
+def test_a_2_gib_input_script_is_refused_without_being_read(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    script = tmp_path / "huge.txt"
+    with script.open("wb") as stream:  # sparse: 2 GiB long, nothing on the disk
+        stream.truncate(2 * 1024**3)
+    read: list[int] = []
+    real_read = os.read
+
+    def counted(descriptor: int, size: int) -> bytes:
+        data = real_read(descriptor, size)
+        read.append(len(data))
+        return data
+
+    monkeypatch.setattr(os, "read", counted)
+    status, err = outcome(cli.main, ["--headless", "--ticks", "5", "--inputs", str(script)],
+                          capsys)
+    assert_one_sentence(status, err, 1)
+    assert "larger than 4 MB" in err and sum(read) == 0
 
 
 @pytest.mark.parametrize("option", ["--level", "--inputs"])

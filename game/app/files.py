@@ -43,9 +43,10 @@ from game.levels.outputs import (
     temporary_pattern,
     write_surface,
 )
-from game.levels.reading import ReadProblem, read_text
+from game.levels.reading import FIX_REGULAR, ReadProblem, read_text
 
 MAX_PATH_SHOWN_CHARS = 200  # a path longer than this is shown by its start and end
+FIX_NOT_A_FILE = "give the path of a file, not a pipe, device or folder"  # not a Tiled file
 
 
 class FileProblem(Exception):
@@ -94,7 +95,8 @@ def read_small_text(path: Path, max_bytes: int, what: str, pipes: bool = False,
     try:
         return read_text(path, max_bytes, what, pipes=pipes, updated=updated)
     except ReadProblem as problem:
-        raise FileProblem(f"{shown(path)}: {problem.problem} — {problem.fix}",
+        fix = FIX_NOT_A_FILE if problem.fix == FIX_REGULAR else problem.fix
+        raise FileProblem(f"{shown(path)}: {problem.problem} — {fix}",
                           problem.problem.removeprefix(what).strip()) from None
 
 
