@@ -8,6 +8,9 @@ bytes, paths and numbers at the commands and the loaders.
 
 from __future__ import annotations
 
+import contextlib
+import errno
+import io
 import json
 import os
 import signal
@@ -23,6 +26,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from game.app import cli
+from game.app.closed_output import quiet_when_output_closes
 from game.app.hud import ELLIPSIS, fit_text
 from game.app.saves import JsonFile, Progress
 from game.app.settings import Settings
@@ -392,3 +396,57 @@ def test_a_20000_character_title_is_fitted_in_a_few_measurements() -> None:
     fitted = fit_text(font, "W" * 20_000, 200)  # type: ignore[arg-type]
     assert fitted.endswith(ELLIPSIS) and 6 * len(fitted) <= 200 < 6 * (len(fitted) + 1)
     assert font.measured <= 20  # one per halving, not one per character
+
+
+def _with_standard_output(how: str, args: list[str]) -> subprocess.CompletedProcess[str]:
+    """``python -m ARGS`` with its standard output a pipe nobody reads any more (``| head``
+    having gone) or the full device (``> /dev/full``)."""
+    if how == "closed":
+        read, write = os.pipe()
+        os.close(read)
+        try:
+            return subprocess.run([sys.executable, "-m", *args], stdout=write, env=ENV,
+                                  stderr=subprocess.PIPE, text=True, timeout=120, check=False)
+        finally:
+            os.close(write)
+    with open("/dev/full", "w", encoding="utf-8") as full:
+        return subprocess.run([sys.executable, "-m", *args], stdout=full, env=ENV,
+                              stderr=subprocess.PIPE, text=True, timeout=120, check=False)
+
+
+@pytest.mark.parametrize(("how", "status"), [("closed", 0), ("full", 1)])
+def test_a_closed_or_full_standard_output_ends_a_command_quietly(how: str,
+                                                                status: int) -> None:
+    if how == "full" and not Path("/dev/full").exists():
+        pytest.skip("/dev/full is not on this system")
+    ran = _with_standard_output(how, ["game.demos.stress", "--crates", "8", "--ticks", "2"])
+    assert (ran.returncode, ran.stderr) == (status, "")  # no traceback, no "Exception ignored"
+
+
+def test_a_command_goes_on_to_its_end_and_status_when_its_reader_stops() -> None:
+    class Closed(io.StringIO):
+        def write(self, text: str) -> int:
+            raise BrokenPipeError(errno.EPIPE, "Broken pipe")
+
+    done: list[str] = []
+
+    def command() -> int:
+        print("first line")
+        print("second line")
+        done.append("the files it writes")
+        return 3
+
+    with contextlib.redirect_stdout(Closed()):
+        assert quiet_when_output_closes(command) == 3
+    assert done == ["the files it writes"]
+
+
+def test_every_program_beside_the_game_starts_through_the_quiet_guard() -> None:
+    """Each ``__main__`` of the tools ends with ``sys.exit(quiet_when_output_closes(main))``;
+    the game, the bench, the stress scene and the lab start through ``run_command``."""
+    for path in sorted((ROOT / "game" / "tools").glob("*.py")):
+        source = path.read_text(encoding="utf-8")
+        if 'if __name__ == "__main__":' in source and path.name != "terrain.py":
+            assert "sys.exit(quiet_when_output_closes(main))" in source, path.name
+    assert "quiet_when_output_closes(main)" in (ROOT / "game/app/arguments.py").read_text(
+        encoding="utf-8")

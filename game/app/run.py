@@ -74,6 +74,13 @@ def held_keys(bindings: Mapping[Action, tuple[int, ...]] = KEYS) -> Actions:
     return frozenset(a for a, keys in bindings.items() if any(pressed[k] for k in keys))
 
 
+def input_script(path: Path) -> InputScript:
+    """The input script at ``path``, read through the one bounded open; FileProblem if it
+    cannot be read, InputScriptError naming the line if a line is bad."""
+    return InputScript.parse(read_small_text(path, MAX_SCRIPT_BYTES, "the input script"),
+                             shown(path))
+
+
 def level_label(path: Path) -> str:
     """A level's path as the report shows it: relative to the working folder when inside it."""
     if not path.is_absolute():
