@@ -27,12 +27,12 @@ from game.app.assets import load_assets
 from game.app.debug_overlay import draw_debug
 from game.app.hud import draw_hud
 from game.app.render import WorldRenderer
+from game.app.run import input_script
 from game.bench.game_step import level_to_play
 from game.bench.timing import collector_off
 from game.levels import load_level
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
 from game.sim.campaign import Campaign, Outcome
-from game.sim.inputs import InputScript
 from game.sim.world import Measure
 
 MS_PER_S = 1000.0
@@ -70,7 +70,7 @@ def measure(max_ticks: int | None = None) -> DrawingCost:
     # As in the window with the overlay on: the tick keeps the query log the overlay draws.
     campaign = Campaign(level_path, loader=lambda path: load_level(path, images=True),
                         measure=Measure(queries=True))
-    script = InputScript.load(script_path)
+    script = input_script(script_path)
     ticks, frames, overlays = [], [], []
     with collector_off():
         while campaign.outcome is Outcome.RUNNING and (max_ticks is None
