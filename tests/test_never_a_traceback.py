@@ -36,6 +36,7 @@ from game.levels import FIRST_LEVEL, LevelError, check_level, load_level, readin
 from game.levels.__main__ import main as levels_main
 from game.sim.campaign import Campaign
 from game.sim.inputs import Action
+from tests.in_process import call_main
 
 ROOT = Path(__file__).resolve().parent.parent
 SCRIPT = ROOT / "tests/scripts/01-first-steps.txt"
@@ -89,6 +90,29 @@ def test_a_pipe_nobody_writes_to_is_a_sentence_not_a_hang(
     assert "nothing came through it" in err
 
 
+def test_a_pipe_written_a_byte_at_a_time_for_ever_is_a_sentence_not_a_hang(
+        fifo: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(reading, "MAX_PIPE_READ_S", 0.3)
+    stop = threading.Event()
+
+    def dribble() -> None:  # never silent for long, never done, until the test ends
+        with fifo.open("w", encoding="utf-8") as pipe:
+            while not stop.is_set():
+                pipe.write("#")
+                pipe.flush()
+                time.sleep(0.02)
+
+    writer = threading.Thread(target=dribble, daemon=True)
+    writer.start()
+    try:  # without a limit in all, the read would go on for as long as the writer does
+        ran = call_main(cli.main, ["--headless", "--ticks", "5", "--inputs", fifo],
+                        hang_s=FIFO_TIMEOUT_S)
+    finally:
+        stop.set()
+    assert_one_sentence(ran.returncode, ran.stderr, 1)
+    assert "still being written after 0.3 s" in ran.stderr
+
+
 def test_a_script_written_into_a_pipe_is_played(fifo: Path, tmp_path: Path,
                                                 capsys: pytest.CaptureFixture[str]) -> None:
     def write() -> None:  # like the shell's --inputs <(command)
@@ -100,7 +124,7 @@ def test_a_script_written_into_a_pipe_is_played(fifo: Path, tmp_path: Path,
     report = tmp_path / "report.json"
     status, err = outcome(cli.main, ["--headless", "--ticks", "30", "--inputs", str(fifo),
                                      "--report", str(report)], capsys)
-    writer.join(timeout=FIFO_TIMEOUT_S)
+    writer.join(timeout=5)
     assert status == 0, err
     player = json.loads(report.read_text(encoding="utf-8"))["player"]
     assert player["vx"] > 0
@@ -212,7 +236,7 @@ def test_ctrl_c_exits_130_and_a_headless_run_still_writes_its_report(tmp_path: P
         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     time.sleep(STARTUP_S)  # Python is running the game's own code by then
     process.send_signal(signal.SIGINT)
-    _, err = process.communicate(timeout=FIFO_TIMEOUT_S)
+    _, err = process.communicate(timeout=5)
     assert process.returncode == 130, err
     assert "Traceback" not in err and "Ctrl-C" in err
     data = json.loads(report.read_text(encoding="utf-8"))
