@@ -15,6 +15,9 @@ from pathlib import Path
 import pytest
 
 from game.app import cli
+from game.app import run as run_module
+from game.sim.inputs import NOTHING, Actions
+from game.sim.world import Event
 from tests.in_process import call_main
 from tests.maps import write_tmx
 
@@ -192,3 +195,32 @@ def test_the_game_starts_without_numpy_and_pygame_loads_its_arrays_when_used() -
                          capture_output=True, timeout=120, check=False)
     assert ran.returncode == 0, ran.stderr
     assert ran.stdout.split() == ["False", "True", "(4,", "3,", "3)", "True"]
+
+
+def test_a_script_that_ends_after_a_headless_run_would_is_refused_before_any_tick(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    script = tmp_path / "far.txt"
+    script.write_text("0 +right\n999999999999 -right  # a typo\n# the end\n\n", encoding="utf-8")
+    ticks: list[int] = []
+    tick = run_module.Run.tick
+
+    def counted(self: run_module.Run, player: Actions = NOTHING) -> list[Event]:
+        ticks.append(self.campaign.ticks)
+        assert len(ticks) < 1000, "the run started"
+        return tick(self, player)
+
+    monkeypatch.setattr(run_module.Run, "tick", counted)
+    status, err = in_process("--headless", "--inputs", script)
+    assert status == 2 and ticks == [], err
+    assert err.count("\n") == 1 and "far.txt: line 2: tick 999,999,999,999 comes after" in err
+    status, err = in_process("--headless", "--inputs", script, "--ticks", "5")
+    assert status == 0 and len(ticks) == 5, err  # with --ticks, the script is cut there
+
+
+def test_a_headless_run_without_ticks_stops_at_its_limit_and_says_so(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(run_module, "HEADLESS_TICK_LIMIT", 30)
+    out = tmp_path / "report.json"
+    status, err = in_process("--headless", "--report", out)
+    assert status == 0 and json.loads(out.read_text("utf-8"))["ticks"] == 30
+    assert err.startswith("the run stopped after 30 ticks") and "--ticks N" in err

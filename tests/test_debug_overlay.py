@@ -15,10 +15,11 @@ from game.app.assets import Assets
 from game.app.debug_overlay import Checked, draw_debug
 from game.app.hud import draw_hud
 from game.app.render import WorldRenderer, screen_offset
+from game.app.run import input_script
 from game.collision.aabb import Box
 from game.levels import load_level
 from game.sim.campaign import Campaign, Outcome
-from game.sim.inputs import NOTHING, InputScript
+from game.sim.inputs import NOTHING
 from game.sim.tuning import Tuning
 from game.sim.world import Measure, World
 from tests.maps import TILE, level_from_ascii
@@ -124,7 +125,7 @@ def frames_of(level: Path, assets: Assets) -> Iterator[tuple[pygame.Surface, Wor
     campaign = Campaign(level, loader=lambda path: load_level(path, images=True),
                         measure=Measure(queries=True))
     script_path = SCRIPTS / f"{level.stem}.txt"
-    script = InputScript.load(script_path) if script_path.exists() else None
+    script = input_script(script_path) if script_path.exists() else None
     renderer = WorldRenderer(assets)
     while campaign.outcome is Outcome.RUNNING and campaign.world.level.path == level:
         campaign.tick(script.held_at(campaign.ticks) if script else NOTHING)

@@ -10,9 +10,9 @@ import pytest
 from game.app.assets import load_assets
 from game.app.effects import SHAKE_S, SQUASH, STRETCH, Effects
 from game.app.render import WorldRenderer
+from game.app.run import input_script
 from game.levels import FIRST_LEVEL, load_level
 from game.sim.campaign import Campaign
-from game.sim.inputs import InputScript
 from game.sim.tuning import TICK_S
 from game.sim.world import EventKind
 
@@ -29,7 +29,7 @@ def screen() -> pygame.Surface:
 def play(effects: Effects | None, screen: pygame.Surface | None = None
          ) -> tuple[Campaign, dict[EventKind, int]]:
     """The first level's winning script for :data:`TICKS` ticks, drawn every tick if asked."""
-    script = InputScript.load(SCRIPT)
+    script = input_script(SCRIPT)
     campaign = Campaign(FIRST_LEVEL, loader=lambda p: load_level(p, images=screen is not None))
     renderer = None
     if screen is not None:
@@ -60,7 +60,7 @@ def test_effects_change_nothing_in_play(screen: pygame.Surface) -> None:
 
 
 def test_each_event_leaves_its_effect() -> None:
-    script = InputScript.load(SCRIPT)
+    script = input_script(SCRIPT)
     campaign = Campaign(FIRST_LEVEL, loader=load_level)
     effects = Effects()
     answered = set()

@@ -23,6 +23,7 @@ import pygame
 import pytest
 
 from game.app import cli
+from game.app.run import input_script
 from game.app.watch import FileWatcher, level_files
 from game.collision.tile_grid import TileGrid, TileShape
 from game.levels import LevelError, budget, check_level, errors, layers, load_level
@@ -483,11 +484,10 @@ def test_a_failed_picture_write_leaves_nothing_and_names_the_file(
 
 
 def test_an_input_script_saved_with_a_byte_order_mark_is_read(tmp_path: Path) -> None:
-    from game.sim.inputs import InputScript
 
     script = tmp_path / "in.txt"
     script.write_bytes(b"\xef\xbb\xbf0 +right\n")
-    assert [str(e) for e in InputScript.load(script).events] == ["0 +right"]
+    assert [str(e) for e in input_script(script).events] == ["0 +right"]
 
 
 def test_a_run_that_does_not_record_keeps_no_input_history() -> None:

@@ -11,11 +11,11 @@ from game.app.assets import load_assets
 from game.app.banner import format_ticks
 from game.app.hud import draw_hud
 from game.app.menus import PAUSE_ITEMS, TIMER, Menus, Nav, Screen, ToggleTimer, press
+from game.app.run import input_script
 from game.app.screens import pause_labels
 from game.app.settings import Settings
 from game.levels import FIRST_LEVEL, load_level
 from game.sim.campaign import Campaign
-from game.sim.inputs import InputScript
 from tests.test_places import SCRIPTS
 
 
@@ -27,7 +27,7 @@ def screen() -> pygame.Surface:
 
 def test_the_hud_timer_shows_the_runs_time_in_the_level(screen: pygame.Surface) -> None:
     assets = load_assets()
-    script = InputScript.load(SCRIPTS / f"{FIRST_LEVEL.stem}.txt")
+    script = input_script(SCRIPTS / f"{FIRST_LEVEL.stem}.txt")
     campaign = Campaign(FIRST_LEVEL, loader=load_level)
     for ticks in (1, 60, 250, 600):
         while campaign.ticks < ticks:
@@ -41,7 +41,7 @@ def test_the_hud_timer_shows_the_runs_time_in_the_level(screen: pygame.Surface) 
 def test_under_the_banner_the_timer_shows_the_finished_levels_time_then_restarts(
         screen: pygame.Surface) -> None:
     assets = load_assets()
-    script = InputScript.load(SCRIPTS / f"{FIRST_LEVEL.stem}.txt")
+    script = input_script(SCRIPTS / f"{FIRST_LEVEL.stem}.txt")
     campaign = Campaign(FIRST_LEVEL, loader=load_level)
     finishing = campaign.world
     while not campaign.results:

@@ -18,13 +18,13 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from game.app.run import input_script
 from game.collision.aabb import Box
 from game.collision.axis_sweep import Edges
 from game.collision.shapes import ShapeSource, TileKind
 from game.levels import LEVELS_DIR, load_level
 from game.sim.body import BodyMoves
 from game.sim.enemy import LEDGE_PROBE_PX, Enemy
-from game.sim.inputs import InputScript
 from game.sim.level import Level
 from game.sim.pickups import TriggerCells
 from game.sim.world import PLAYER_KEY, ContactKey, Measure, World, crossed
@@ -40,7 +40,7 @@ def level_of(path: Path) -> Level:
 
 def _played(level_path: Path, measure: Measure | None = None) -> Iterator[World]:
     """The level played by its winning script: the world after each tick."""
-    script = InputScript.load(SCRIPTS / f"{level_path.stem}.txt")
+    script = input_script(SCRIPTS / f"{level_path.stem}.txt")
     world = World(level_of(level_path), measure=measure or Measure())
     last = script.events[-1].tick if script.events else 0
     for tick in range(last + 1):
@@ -94,7 +94,7 @@ def audit(level_path: Path) -> Audit:
     """Play ``level_path`` by its winning script; before each tick, ask every grounded enemy's
     ledge look-ahead and its lookup alone; inside each tick, make step 7 as the tick makes
     it and, beside it, the full tests at the same moment."""
-    script = InputScript.load(SCRIPTS / f"{level_path.stem}.txt")
+    script = input_script(SCRIPTS / f"{level_path.stem}.txt")
     world = World(level_of(level_path))
     contacts_of_tick = world._player_contacts
     seen = Audit()

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from game.app.run import input_script
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
@@ -15,7 +16,7 @@ from game.levels.__main__ import main as levels_main
 from game.levels.loader import check_level
 from game.levels.reach import DEFAULT_LIMITS, measure_limits, measure_reach
 from game.sim.campaign import Campaign, Outcome
-from game.sim.inputs import Action, InputScript
+from game.sim.inputs import Action
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
 from tests.in_process import call_main
@@ -70,7 +71,7 @@ def test_the_checker_names_the_file_and_the_fix_for_a_bad_map(tmp_path: Path) ->
 
 @pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
 def test_the_scripted_run_reaches_the_exit(level: Path) -> None:
-    script = InputScript.load(SCRIPTS / f"{level.stem}.txt")
+    script = input_script(SCRIPTS / f"{level.stem}.txt")
     campaign = Campaign(level, loader=load_level, measure=MEASURED)
     while campaign.levels_completed == 0 and campaign.outcome is Outcome.RUNNING:
         campaign.tick(script.held_at(campaign.ticks))
@@ -96,13 +97,13 @@ def test_hazard_tiles_use_their_partial_collision_rectangle() -> None:
 
 def test_the_whole_campaign_is_won_from_the_first_level_to_the_win() -> None:
     campaign = Campaign(FIRST_LEVEL, loader=load_level)
-    start_tick, script = 0, InputScript.load(SCRIPTS / f"{FIRST_LEVEL.stem}.txt")
+    start_tick, script = 0, input_script(SCRIPTS / f"{FIRST_LEVEL.stem}.txt")
     level = campaign.world.level.path
     while campaign.outcome is Outcome.RUNNING:
         campaign.tick(script.held_at(campaign.ticks - start_tick))
         if campaign.world.level.path != level:       # on to the next level and its script
             level, start_tick = campaign.world.level.path, campaign.ticks
-            script = InputScript.load(SCRIPTS / f"{level.stem}.txt")
+            script = input_script(SCRIPTS / f"{level.stem}.txt")
         assert campaign.ticks < 60 * 60 * 5
     assert campaign.outcome is Outcome.WON
     assert campaign.levels_completed == len(SHIPPED) and campaign.deaths == 0

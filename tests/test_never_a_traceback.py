@@ -8,6 +8,9 @@ bytes, paths and numbers at the commands and the loaders.
 
 from __future__ import annotations
 
+import contextlib
+import errno
+import io
 import json
 import os
 import signal
@@ -30,8 +33,10 @@ from game.bench import main as bench_main
 from game.demos import stress
 from game.levels import FIRST_LEVEL, LevelError, check_level, load_level, reading
 from game.levels.__main__ import main as levels_main
+from game.levels.closed_output import quiet_when_output_closes
 from game.sim.campaign import Campaign
 from game.sim.inputs import Action
+from tests.in_process import call_main
 
 ROOT = Path(__file__).resolve().parent.parent
 SCRIPT = ROOT / "tests/scripts/01-first-steps.txt"
@@ -85,6 +90,29 @@ def test_a_pipe_nobody_writes_to_is_a_sentence_not_a_hang(
     assert "nothing came through it" in err
 
 
+def test_a_pipe_written_a_byte_at_a_time_for_ever_is_a_sentence_not_a_hang(
+        fifo: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(reading, "MAX_PIPE_READ_S", 0.3)
+    stop = threading.Event()
+
+    def dribble() -> None:  # never silent for long, never done, until the test ends
+        with fifo.open("w", encoding="utf-8") as pipe:
+            while not stop.is_set():
+                pipe.write("#")
+                pipe.flush()
+                time.sleep(0.02)
+
+    writer = threading.Thread(target=dribble, daemon=True)
+    writer.start()
+    try:  # without a limit in all, the read would go on for as long as the writer does
+        ran = call_main(cli.main, ["--headless", "--ticks", "5", "--inputs", fifo],
+                        hang_s=FIFO_TIMEOUT_S)
+    finally:
+        stop.set()
+    assert_one_sentence(ran.returncode, ran.stderr, 1)
+    assert "still being written after 0.3 s" in ran.stderr
+
+
 def test_a_script_written_into_a_pipe_is_played(fifo: Path, tmp_path: Path,
                                                 capsys: pytest.CaptureFixture[str]) -> None:
     def write() -> None:  # like the shell's --inputs <(command)
@@ -96,7 +124,7 @@ def test_a_script_written_into_a_pipe_is_played(fifo: Path, tmp_path: Path,
     report = tmp_path / "report.json"
     status, err = outcome(cli.main, ["--headless", "--ticks", "30", "--inputs", str(fifo),
                                      "--report", str(report)], capsys)
-    writer.join(timeout=FIFO_TIMEOUT_S)
+    writer.join(timeout=5)
     assert status == 0, err
     player = json.loads(report.read_text(encoding="utf-8"))["player"]
     assert player["vx"] > 0
@@ -109,6 +137,28 @@ def test_a_device_given_as_input_script_is_refused(
         pytest.skip(f"{device} is not on this system")
     status, err = outcome(cli.main, ["--headless", "--ticks", "5", "--inputs", device], capsys)
     assert_one_sentence(status, err, 1)
+    assert "Tiled" not in err  # an input script is not a file Tiled saves
+
+
+def test_a_2_gib_input_script_is_refused_without_being_read(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    script = tmp_path / "huge.txt"
+    with script.open("wb") as stream:  # sparse: 2 GiB long, nothing on the disk
+        stream.truncate(2 * 1024**3)
+    read: list[int] = []
+    real_read = os.read
+
+    def counted(descriptor: int, size: int) -> bytes:
+        data = real_read(descriptor, size)
+        read.append(len(data))
+        return data
+
+    monkeypatch.setattr(os, "read", counted)
+    status, err = outcome(cli.main, ["--headless", "--ticks", "5", "--inputs", str(script)],
+                          capsys)
+    assert_one_sentence(status, err, 1)
+    assert "larger than 4 MB" in err and sum(read) == 0
 
 
 @pytest.mark.parametrize("option", ["--level", "--inputs"])
@@ -186,7 +236,7 @@ def test_ctrl_c_exits_130_and_a_headless_run_still_writes_its_report(tmp_path: P
         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     time.sleep(STARTUP_S)  # Python is running the game's own code by then
     process.send_signal(signal.SIGINT)
-    _, err = process.communicate(timeout=FIFO_TIMEOUT_S)
+    _, err = process.communicate(timeout=5)
     assert process.returncode == 130, err
     assert "Traceback" not in err and "Ctrl-C" in err
     data = json.loads(report.read_text(encoding="utf-8"))
@@ -370,3 +420,57 @@ def test_a_20000_character_title_is_fitted_in_a_few_measurements() -> None:
     fitted = fit_text(font, "W" * 20_000, 200)  # type: ignore[arg-type]
     assert fitted.endswith(ELLIPSIS) and 6 * len(fitted) <= 200 < 6 * (len(fitted) + 1)
     assert font.measured <= 20  # one per halving, not one per character
+
+
+def _with_standard_output(how: str, args: list[str]) -> subprocess.CompletedProcess[str]:
+    """``python -m ARGS`` with its standard output a pipe nobody reads any more (``| head``
+    having gone) or the full device (``> /dev/full``)."""
+    if how == "closed":
+        read, write = os.pipe()
+        os.close(read)
+        try:
+            return subprocess.run([sys.executable, "-m", *args], stdout=write, env=ENV,
+                                  stderr=subprocess.PIPE, text=True, timeout=120, check=False)
+        finally:
+            os.close(write)
+    with open("/dev/full", "w", encoding="utf-8") as full:
+        return subprocess.run([sys.executable, "-m", *args], stdout=full, env=ENV,
+                              stderr=subprocess.PIPE, text=True, timeout=120, check=False)
+
+
+@pytest.mark.parametrize(("how", "status"), [("closed", 0), ("full", 0)])
+def test_a_closed_or_full_standard_output_ends_a_command_quietly(how: str,
+                                                                status: int) -> None:
+    if how == "full" and not Path("/dev/full").exists():
+        pytest.skip("/dev/full is not on this system")
+    ran = _with_standard_output(how, ["game.demos.stress", "--crates", "8", "--ticks", "2"])
+    assert (ran.returncode, ran.stderr) == (status, "")  # no traceback, no "Exception ignored"
+
+
+def test_a_command_goes_on_to_its_end_and_status_when_its_reader_stops() -> None:
+    class Closed(io.StringIO):
+        def write(self, text: str) -> int:
+            raise BrokenPipeError(errno.EPIPE, "Broken pipe")
+
+    done: list[str] = []
+
+    def command() -> int:
+        print("first line")
+        print("second line")
+        done.append("the files it writes")
+        return 3
+
+    with contextlib.redirect_stdout(Closed()):
+        assert quiet_when_output_closes(command) == 3
+    assert done == ["the files it writes"]
+
+
+def test_every_program_beside_the_game_starts_through_the_quiet_guard() -> None:
+    """Each ``__main__`` of the tools ends with ``sys.exit(quiet_when_output_closes(main))``;
+    the game, the bench, the stress scene and the lab start through ``run_command``."""
+    for path in sorted((ROOT / "game" / "tools").glob("*.py")):
+        source = path.read_text(encoding="utf-8")
+        if 'if __name__ == "__main__":' in source and path.name != "terrain.py":
+            assert "sys.exit(quiet_when_output_closes(main))" in source, path.name
+    assert "quiet_when_output_closes(main)" in (ROOT / "game/app/arguments.py").read_text(
+        encoding="utf-8")

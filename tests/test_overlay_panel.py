@@ -24,11 +24,11 @@ from game.app.debug_overlay import (
 )
 from game.app.hud import HUD_BAR_H_PX, draw_hud
 from game.app.render import WorldRenderer, screen_offset
+from game.app.run import input_script
 from game.app.window import window_scale
 from game.levels import load_level
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
 from game.sim.campaign import Campaign, Outcome
-from game.sim.inputs import InputScript
 from game.sim.world import Measure
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -44,7 +44,7 @@ def played(level: str, assets: Assets) -> Iterator[tuple[pygame.Surface, Campaig
     path = ROOT / "levels" / f"{level}.tmx"
     campaign = Campaign(path, loader=lambda p: load_level(p, images=True),
                         measure=Measure(queries=True))
-    script = InputScript.load(ROOT / "tests" / "scripts" / f"{level}.txt")
+    script = input_script(ROOT / "tests" / "scripts" / f"{level}.txt")
     renderer = WorldRenderer(assets)
     while campaign.outcome is Outcome.RUNNING and campaign.world.level.path == path:
         campaign.tick(script.held_at(campaign.ticks))

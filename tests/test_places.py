@@ -12,12 +12,12 @@ import pytest
 from game.app.assets import Assets
 from game.app.places import PLACES, place_of, recolour
 from game.app.render import WorldRenderer, floor_line_px, pit_spans_px
+from game.app.run import input_script
 from game.collision.shapes import TileKind
 from game.levels import LEVELS_DIR, load_level
 from game.levels.classes import SETTINGS
 from game.levels.loader import check_level
 from game.sim.campaign import Campaign, Outcome
-from game.sim.inputs import InputScript
 from game.sim.world import World
 from game.tools import art
 
@@ -98,7 +98,7 @@ def test_an_unknown_setting_is_an_error_that_lists_the_settings(tmp_path: Path) 
 
 @pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
 def test_a_pit_in_view_shows_its_bottom_all_through_the_winning_run(level: Path) -> None:
-    script = InputScript.load(SCRIPTS / f"{level.stem}.txt")
+    script = input_script(SCRIPTS / f"{level.stem}.txt")
     campaign = Campaign(level, loader=load_level)
     grid = campaign.world.level.grid
     floor = floor_line_px(grid) // grid.tile_h

@@ -7,15 +7,31 @@ import json
 import os
 from pathlib import Path
 
+import pygame
 import pytest
 
-from game.app import saves
+from game.app import cli, saves
+from game.app import window as window_module
+from game.app.cli import parser
 from game.app.files import FileProblem
-from game.app.saves import Attempt, Finish, JsonFile, Progress, data_dir, progress_file
+from game.app.menus import Screen
+from game.app.run import Run, input_script
+from game.app.saves import (
+    Attempt,
+    CampaignMaps,
+    Finish,
+    JsonFile,
+    Progress,
+    data_dir,
+    progress_file,
+)
+from game.app.window import GameWindow
 from game.levels import FIRST_LEVEL, load_level
-from game.sim.campaign import Campaign
-from game.sim.inputs import NOTHING, InputScript
+from game.sim.campaign import Campaign, Outcome
+from game.sim.inputs import NOTHING, Action
 from game.sim.world import EventKind
+from tests.in_process import call_main
+from tests.maps import write_tmx
 
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
 
@@ -182,7 +198,7 @@ def test_a_long_list_of_problems_is_cut_short() -> None:
 
 def test_an_attempt_times_a_finished_level_and_counts_its_coins() -> None:
     campaign = Campaign(FIRST_LEVEL, loader=load_level)
-    script = InputScript.load(SCRIPTS / "01-first-steps.txt")
+    script = input_script(SCRIPTS / "01-first-steps.txt")
     attempt = Attempt()
     finishes: list[Finish] = []
     exit_tick = None
@@ -212,3 +228,63 @@ def test_an_attempt_starts_again_when_the_level_restarts() -> None:
     campaign.restart_level()
     attempt.before_tick(campaign)
     assert (attempt.started_tick, attempt.coins) == (10, 0)
+
+
+def _play_to_the_end(run: Run, monkeypatch: pytest.MonkeyPatch) -> GameWindow:
+    """A person holding right in the window until the run ends, Enter pressed at every
+    banner; the window closed at the end screen."""
+    monkeypatch.setattr(window_module, "held_keys", lambda *_: frozenset({Action.RIGHT}))
+    game = GameWindow(run)
+    frames: list[Screen] = []
+    enter = pygame.event.Event(pygame.KEYDOWN, key=pygame.K_RETURN, mod=0, unicode="",
+                               scancode=0)
+
+    def next_batch(*_: object, **__: object) -> list[pygame.event.Event]:
+        frames.append(game.menus.screen)
+        assert len(frames) < 2000, "the run never ended"
+        if game.menus.screen is Screen.ENDED:
+            return [pygame.event.Event(pygame.QUIT)]
+        return [enter]
+
+    monkeypatch.setattr(pygame.event, "get", next_batch)
+    assert game.play() == 0
+    assert run.campaign.outcome is Outcome.WON
+    return game
+
+
+def test_a_downloaded_map_named_like_a_campaign_map_never_changes_progress(
+        display: None, data_home: Path, tmp_path: Path,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    progress_file().save(played().to_json())
+    before = (data_home / "progress.json").read_bytes()
+    downloads = tmp_path / "Downloads"
+    downloads.mkdir()
+    first = write_tmx(downloads, [" PD ", "####"], name=FIRST_LEVEL.name,
+                      properties={"next_level": ("file", "06-the-summit.tmx")})
+    write_tmx(downloads, [" PD ", "####"], name="06-the-summit.tmx")
+    run = Run(Campaign(first, loader=load_level), None,
+              parser().parse_args(["--level", str(first)]))
+    game = _play_to_the_end(run, monkeypatch)
+    assert len(run.campaign.results) == 2  # both downloaded maps were finished
+    assert (data_home / "progress.json").read_bytes() == before
+    assert game.progress.best_ticks == {"01-first-steps.tmx": 900}
+    assert "06-the-summit.tmx" not in game.progress.unlocked
+
+
+def test_a_campaign_map_keeps_its_finish_whatever_name_leads_to_it(tmp_path: Path) -> None:
+    level = load_level(FIRST_LEVEL.parent / ".." / FIRST_LEVEL.parent.name / FIRST_LEVEL.name)
+    maps = CampaignMaps.of([FIRST_LEVEL, FIRST_LEVEL.with_name("02-over-the-gaps.tmx")])
+    finish = Finish(FIRST_LEVEL.name, 900, 3, "02-over-the-gaps.tmx")
+    assert maps.kept(finish, level) == finish
+    alone = CampaignMaps.of([FIRST_LEVEL])  # its next map is not the campaign's: no unlock
+    assert alone.kept(finish, level) == finish._replace(next_level=None)
+    copy = tmp_path / FIRST_LEVEL.name
+    copy.write_bytes(FIRST_LEVEL.read_bytes())
+    assert not maps.holds(copy)
+
+
+def test_a_headless_run_never_touches_the_saves(data_home: Path) -> None:
+    ran = call_main(cli.main, ["--headless", "--level", FIRST_LEVEL, "--inputs",
+                               SCRIPTS / "01-first-steps.txt", "--ticks", "900"])
+    assert ran.returncode == 0, ran.stderr
+    assert not data_home.exists()

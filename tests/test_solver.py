@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 
+from game.app.run import input_script
 from game.levels import LEVELS_DIR, load_level, reach
 from game.levels.__main__ import check, command_name
 from game.levels.__main__ import main as levels_main
@@ -31,7 +32,7 @@ from game.levels.solver import (
     solve,
 )
 from game.levels.verdict import Kind
-from game.sim.inputs import Action, InputScript
+from game.sim.inputs import Action
 from game.sim.snapshot import Snapshot
 from game.sim.tuning import Tuning
 from game.sim.world import World
@@ -56,7 +57,7 @@ def state(world: World) -> tuple[object, ...]:
 def test_a_restored_snapshot_replays_exactly_as_the_first_time(name: str) -> None:
     level = load_level(LEVELS_DIR / f"{name}.tmx")
     world = World(level)
-    script = InputScript.load(SCRIPTS / f"{name}.txt")
+    script = input_script(SCRIPTS / f"{name}.txt")
     for tick in range(300):
         world.step(script.held_at(tick))
     saved = Snapshot.of(world)
@@ -65,7 +66,7 @@ def test_a_restored_snapshot_replays_exactly_as_the_first_time(name: str) -> Non
         world.step(script.held_at(tick))
         first.append(state(world))
     saved.restore(world)
-    script = InputScript.load(SCRIPTS / f"{name}.txt")
+    script = input_script(SCRIPTS / f"{name}.txt")
     script.held_at(299)
     again = []
     for tick in range(300, 1500):

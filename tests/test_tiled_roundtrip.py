@@ -26,11 +26,11 @@ from pathlib import Path
 
 import pytest
 
+from game.app.run import input_script
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.levels.__main__ import main as levels_main
 from game.levels.project import OBJECT_TYPES_FILE
 from game.sim.campaign import Campaign, Outcome
-from game.sim.inputs import InputScript
 from game.sim.level import Level
 from tests.in_process import call_main
 
@@ -89,7 +89,7 @@ def loaded(path: Path) -> Level:
 @functools.cache  # the original is played once, however many variants it is held to
 def final_state(level: Path) -> dict[str, object]:
     """Play ``level`` with its winning script; what the run ends with."""
-    script = InputScript.load(SCRIPTS / f"{level.stem}.txt")
+    script = input_script(SCRIPTS / f"{level.stem}.txt")
     campaign = Campaign(level, loader=load_level)
     while campaign.outcome is Outcome.RUNNING and campaign.levels_completed == 0 and (
             campaign.ticks < MAX_TICKS):

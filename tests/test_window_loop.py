@@ -17,6 +17,7 @@ from game.app.banner import SKIP_AFTER_S
 from game.app.cli import parser
 from game.app.menus import Screen
 from game.app.run import Run
+from game.app.saves import CampaignMaps
 from game.app.window import MENU_FPS, STILL_FPS, GameWindow, play_in_window
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, InputScript
@@ -199,6 +200,7 @@ def test_the_level_end_banner_holds_the_simulation_and_enter_skips_it_only_after
     run = Run(Campaign(Path("x.tmx"), loader=lambda _: level), None,
               parser().parse_args(["--level", "x.tmx"]))  # a person playing: progress is kept
     game = GameWindow(run)
+    game.campaign_maps = CampaignMaps.of([level.path])  # as if it were the campaign's own map
     seen: list[tuple[Screen, int]] = []
     enter = key(pygame.K_RETURN)
     skip_at = round(SKIP_AFTER_S / FRAME_S) + 10  # a frame well after the banner may be skipped

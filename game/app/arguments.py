@@ -10,6 +10,8 @@ What it teaches:
     length is looked at first and the value is compared with its limits after.
   * **Errors quote a short excerpt.** A value pasted by mistake can be megabytes long; the
     message shows its start and its length, never all of it.
+  * **A reader that stops reading is not a crash either** (``| head -1``): see
+    :mod:`game.levels.closed_output`.
   * **Ctrl-C is a way to stop, not a crash**: exit status 130, the shell's code for a
     program stopped by SIGINT, and one line instead of a traceback.
 
@@ -35,6 +37,7 @@ import sys
 from collections.abc import Callable
 from typing import Any, NoReturn
 
+from game.levels.closed_output import quiet_when_output_closes
 from game.sim.whole_numbers import NumberTextError, read_whole
 
 EXIT_USAGE = 2
@@ -82,14 +85,15 @@ class Parser(argparse.ArgumentParser):
 
 
 def run_command(main: Callable[[], int]) -> int:
-    """Call ``main`` and return its exit status; Ctrl-C returns 130 with one line.
+    """Call ``main`` and return its exit status; Ctrl-C returns 130 with one line, and a
+    standard output closed or full ends nothing (:mod:`game.levels.closed_output`).
 
     While ``main`` runs, Ctrl-C is a KeyboardInterrupt it may catch (to write what a run has
     done so far); before and after, the handler the program installed (the ``__main__``
     modules' guard for the imports) is in charge."""
     previous = _interrupts_raise()
     try:
-        return main()
+        return quiet_when_output_closes(main)
     except KeyboardInterrupt:
         print("stopped by Ctrl-C", file=sys.stderr)
         return EXIT_INTERRUPTED

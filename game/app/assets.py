@@ -13,15 +13,19 @@ What it teaches:
     a display mode to exist, which is why :func:`load_assets` must run after
     ``pygame.display.set_mode`` (a 1x1 window or ``SDL_VIDEODRIVER=dummy`` is enough).
   * **Paths are found from this file, not from the working directory,** so the game starts
-    the same from any folder.
+    the same from any folder; each file is read through the one bounded open
+    (:func:`game.app.files.load_image`, :func:`game.app.files.read_small_bytes`) and handed
+    to pygame from memory.
 """
 
 from __future__ import annotations
 
+import io
 from dataclasses import dataclass, field
 
 import pygame
 
+from game.app.files import FileProblem, load_image, read_small_bytes
 from game.levels.classes import SETTINGS
 from game.levels.shipped import ASSETS_DIR
 
@@ -29,6 +33,7 @@ ASSETS = ASSETS_DIR
 
 SPRITE_PX = 16  # player and enemy frames are 16x16
 COIN_PX = 8  # coin frames are 8x8
+MAX_ASSET_BYTES = 16 * 1024 * 1024  # each picture or font of the game's own: a few kB
 
 # The game's own pixel font (game.tools.pixel_font), drawn at 1x: 7 px capitals, 2 px
 # descenders. The title font is the same drawing with every pixel doubled.
@@ -78,8 +83,9 @@ def _image(name: str) -> pygame.Surface:
     """Load ``assets/<name>`` converted for fast blitting, or say which file is wrong."""
     path = ASSETS / name
     try:
-        return pygame.image.load(str(path)).convert_alpha()
-    except (pygame.error, FileNotFoundError) as error:
+        image: pygame.Surface = load_image(path, MAX_ASSET_BYTES, "the picture")
+        return image.convert_alpha()
+    except FileProblem as error:
         raise RuntimeError(f"cannot load {path}: {error} (regenerate with python -m game.tools.art)"
                            ) from None
 
@@ -87,9 +93,10 @@ def _image(name: str) -> pygame.Surface:
 def _font(name: str, size_px: int) -> pygame.font.Font:
     """Load the bitmap font ``assets/<name>`` at the one size it is drawn in."""
     path = ASSETS / name
-    try:
-        return pygame.font.Font(str(path), size_px)
-    except (pygame.error, FileNotFoundError, OSError) as error:
+    try:  # pygame reads the font from memory: the file goes through the one bounded open
+        return pygame.font.Font(io.BytesIO(read_small_bytes(path, MAX_ASSET_BYTES, "the font")),
+                                size_px)
+    except (pygame.error, FileProblem, OSError) as error:
         raise RuntimeError(f"cannot load {path}: {error} (regenerate with "
                            "python -m game.tools.art)") from None
 

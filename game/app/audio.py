@@ -7,7 +7,9 @@ tick left behind and never changes the game. The sounds are made by :mod:`game.t
 What it teaches:
   * **Effects are Sounds, music is streamed.** A ``pygame.mixer.Sound`` is decoded into
     memory once and can play on several channels at once (coins in quick succession);
-    ``pygame.mixer.music`` streams one long file from disk and loops it.
+    ``pygame.mixer.music`` decodes one long file as it plays, and loops it. Both are handed
+    bytes read once through the one bounded open
+    (:func:`game.app.files.read_small_bytes`), never a path to open themselves.
   * **Sound is optional.** A machine with no audio device, a headless run or a missing file
     gives a silent :class:`Audio` whose methods do nothing; :attr:`Audio.status` says why,
     in one sentence, for the caller to show or ignore. Nothing is raised and nothing printed.
@@ -27,6 +29,7 @@ ValueError: no sound is called 'coins': use one of jump, coin, stomp, hurt, exit
 
 from __future__ import annotations
 
+import io
 import os
 import sys
 from collections.abc import Iterator
@@ -35,6 +38,7 @@ from pathlib import Path
 
 import pygame
 
+from game.app.files import FileProblem, read_small_bytes
 from game.levels.shipped import ASSETS_DIR
 from game.sim.world import EventKind
 
@@ -44,6 +48,7 @@ SOUNDS = ASSETS / "sounds"
 # <name>.wav in SOUNDS; "tally" plays when the level-end banner's tally is up
 EFFECT_NAMES = ("jump", "coin", "stomp", "hurt", "exit", "menu", "tally")
 MUSIC_FILE = "music.wav"
+MAX_SOUND_BYTES = 16 * 1024 * 1024  # each sound of the game's own: the music is about 550 kB
 SOUND_FOR_EVENT: dict[EventKind, str] = {  # events missing here make no sound
     EventKind.JUMP: "jump",
     EventKind.COIN: "coin",
@@ -96,7 +101,8 @@ class Audio:
     def __init__(self, sounds: Path = SOUNDS, *, enabled: bool = True) -> None:
         self.status = "Sound is on."
         self._effects: dict[str, pygame.mixer.Sound] = {}
-        self._music: Path | None = None
+        self._music: bytes | None = None  # the music file, decoded as it plays
+        self._music_stream: io.BytesIO | None = None  # what the mixer reads it from
         self._music_paused = False
         self._opened_mixer = False
         self._effects_volume = 1.0
@@ -124,13 +130,13 @@ class Audio:
         for name in EFFECT_NAMES:
             path = sounds / f"{name}.wav"
             try:
-                # A str, not a Path: pygame 2.6 reports a missing Path as a TypeError.
-                self._effects[name] = pygame.mixer.Sound(str(path))
-            except (pygame.error, OSError):  # a broken file; a missing one
+                data = read_small_bytes(path, MAX_SOUND_BYTES, "the sound")
+                self._effects[name] = pygame.mixer.Sound(file=io.BytesIO(data))
+            except (pygame.error, FileProblem):  # a broken file; a missing one
                 missing.append(path.name)
-        if (sounds / MUSIC_FILE).is_file():
-            self._music = sounds / MUSIC_FILE
-        else:
+        try:
+            self._music = read_small_bytes(sounds / MUSIC_FILE, MAX_SOUND_BYTES, "the music")
+        except FileProblem:
             missing.append(MUSIC_FILE)
         self._apply_volumes()
         return missing
@@ -170,7 +176,8 @@ class Audio:
         if pygame.mixer.music.get_busy():
             return
         try:
-            pygame.mixer.music.load(self._music)
+            self._music_stream = io.BytesIO(self._music)  # kept while the mixer reads it
+            pygame.mixer.music.load(self._music_stream, "wav")
             pygame.mixer.music.set_volume(self._music_volume)
             pygame.mixer.music.play(loops=-1)
         except pygame.error as error:
@@ -210,6 +217,6 @@ class Audio:
         if self._opened_mixer and pygame.mixer.get_init():
             pygame.mixer.quit()
         self._effects.clear()
-        self._music = None
+        self._music = self._music_stream = None
         self._music_paused = False
         self._opened_mixer = False

@@ -26,7 +26,8 @@ def parser() -> argparse.ArgumentParser:
         description="A platformer that teaches 2D collision detection. Levels are Tiled maps.")
     p.add_argument("--level", type=Path, metavar="PATH", help="start at this .tmx map")
     p.add_argument("--headless", action="store_true",
-                   help="no window and no audio; simulate as fast as possible")
+                   help="no window and no audio; simulate as fast as possible (without "
+                   "--ticks, for at most an hour of game time)")
     p.add_argument("--ticks", type=whole_number(0, MAX_TICKS, "ticks"), metavar="N",
                    help="stop after N ticks (1 tick = 1/60 s of game time)")
     p.add_argument("--inputs", type=Path, metavar="FILE", help="replay an input script")

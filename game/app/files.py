@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import contextlib
 import errno
+import io
 import os
 import re
 import stat
@@ -43,9 +44,10 @@ from game.levels.outputs import (
     temporary_pattern,
     write_surface,
 )
-from game.levels.reading import ReadProblem, read_text
+from game.levels.reading import FIX_REGULAR, ReadProblem, read_bounded, read_text
 
 MAX_PATH_SHOWN_CHARS = 200  # a path longer than this is shown by its start and end
+FIX_NOT_A_FILE = "give the path of a file, not a pipe, device or folder"  # not a Tiled file
 
 
 class FileProblem(Exception):
@@ -94,8 +96,40 @@ def read_small_text(path: Path, max_bytes: int, what: str, pipes: bool = False,
     try:
         return read_text(path, max_bytes, what, pipes=pipes, updated=updated)
     except ReadProblem as problem:
-        raise FileProblem(f"{shown(path)}: {problem.problem} — {problem.fix}",
+        fix = FIX_NOT_A_FILE if problem.fix == FIX_REGULAR else problem.fix
+        raise FileProblem(f"{shown(path)}: {problem.problem} — {fix}",
                           problem.problem.removeprefix(what).strip()) from None
+
+
+def read_small_bytes(path: Path, max_bytes: int, what: str) -> bytes:
+    """The bytes of a regular file of at most ``max_bytes``; else a FileProblem naming it.
+
+    >>> import tempfile
+    >>> sound = Path(tempfile.mkdtemp()) / "jump.wav"
+    >>> _ = sound.write_bytes(b"RIFF")
+    >>> read_small_bytes(sound, 100, "the sound")
+    b'RIFF'
+    """
+    try:
+        return read_bounded(path, max_bytes, what)
+    except ReadProblem as problem:
+        fix = FIX_NOT_A_FILE if problem.fix == FIX_REGULAR else problem.fix
+        raise FileProblem(f"{shown(path)}: {problem.problem} — {fix}",
+                          problem.problem.removeprefix(what).strip()) from None
+
+
+def load_image(path: Path, max_bytes: int, what: str = "the image") -> Any:
+    """A pygame Surface decoded from the file at ``path``, read through the one bounded
+    open (:func:`read_small_bytes`) and handed to pygame from memory; pygame picks the
+    format by the name's ending. A file pygame cannot decode is a FileProblem too."""
+    import pygame
+
+    data = read_small_bytes(path, max_bytes, what)
+    try:
+        return pygame.image.load(io.BytesIO(data), f"image{path.suffix.lower()}")
+    except pygame.error as error:
+        raise FileProblem(f"{shown(path)}: {what} cannot be decoded ({error}) — save it "
+                          "again as PNG", str(error)) from None
 
 
 def output_problem(path: Path) -> str | None:
@@ -221,6 +255,24 @@ def write_text_atomically(path: Path, text: str) -> None:
     """
     def write(tmp: Path) -> None:
         tmp.write_text(text, encoding="utf-8")
+
+    write_atomically(path, write)
+
+
+def write_bytes_atomically(path: Path, data: bytes, mode: int | None = None) -> None:
+    """Atomically replace ``path`` with ``data``; ``mode`` sets its permission bits (the
+    temporary file is made with the process's defaults).
+
+    >>> import tempfile, pathlib
+    >>> target = pathlib.Path(tempfile.mkdtemp()) / "out.bin"
+    >>> write_bytes_atomically(target, b"\\x00\\x01")
+    >>> target.read_bytes()
+    b'\\x00\\x01'
+    """
+    def write(tmp: Path) -> None:
+        tmp.write_bytes(data)
+        if mode is not None:
+            tmp.chmod(mode)
 
     write_atomically(path, write)
 

@@ -32,6 +32,7 @@ from pathlib import Path
 
 import pygame
 
+from game.app.clashes import clashes, level_inputs
 from game.app.display import EXIT_NO_WINDOW, GAME_INSTEAD, GAME_WINDOW, open_window
 from game.app.files import (
     FileProblem,
@@ -51,7 +52,7 @@ from game.sim.inputs import NOTHING, Action, Actions, InputScript, InputScriptEr
 from game.sim.level import Level
 from game.sim.world import Event, Measure
 
-HEADLESS_TICK_LIMIT = 60 * 60 * 60  # an hour of game time: a run with no --ticks still ends
+HEADLESS_TICK_LIMIT = 60 * 60 * 60  # ticks: an hour of game time, so a run with no --ticks ends
 TARGET_FPS = 60
 EXIT_OK, EXIT_BAD_FILE, EXIT_USAGE = 0, 1, 2
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what shells report for a program stopped by Ctrl-C
@@ -71,6 +72,13 @@ def held_keys(bindings: Mapping[Action, tuple[int, ...]] = KEYS) -> Actions:
     """The actions whose keys are down right now (the pads' are :meth:`Gamepads.held`)."""
     pressed = pygame.key.get_pressed()
     return frozenset(a for a, keys in bindings.items() if any(pressed[k] for k in keys))
+
+
+def input_script(path: Path) -> InputScript:
+    """The input script at ``path``, read through the one bounded open; FileProblem if it
+    cannot be read, InputScriptError naming the line if a line is bad."""
+    return InputScript.parse(read_small_text(path, MAX_SCRIPT_BYTES, "the input script"),
+                             shown(path))
 
 
 def level_label(path: Path) -> str:
@@ -150,6 +158,45 @@ def _output_problems(args: argparse.Namespace) -> list[str]:
             and (problem := output_problem(path)) is not None]
 
 
+def _too_late(script: InputScript, text: str, args: argparse.Namespace) -> str | None:
+    """The sentence refusing a script whose last event comes after the end of a headless
+    run without ``--ticks`` (:data:`HEADLESS_TICK_LIMIT`), else None: the run would end
+    before the script does, so the script cannot be what was meant."""
+    if not script.events or script.events[-1].tick < HEADLESS_TICK_LIMIT:
+        return None
+    last = script.events[-1].tick
+    lines = text.removeprefix("\ufeff").splitlines()
+    number = next((n for n in range(len(lines), 0, -1)
+                   if lines[n - 1].split("#", 1)[0].strip()), len(lines))
+    return (f"{escaped(shown(args.inputs))}: line {number}: tick {last:,} comes after the end "
+            f"of a headless run without --ticks ({HEADLESS_TICK_LIMIT:,} ticks, "
+            f"{_game_time(HEADLESS_TICK_LIMIT)} of game time) — give --ticks N to run that "
+            "long, or check the tick")
+
+
+def _game_time(ticks: int) -> str:
+    """``ticks`` as game time, in hours from an hour up, else in seconds.
+
+    >>> _game_time(HEADLESS_TICK_LIMIT), _game_time(90)
+    ('1 h', '1.5 s')
+    """
+    seconds = ticks / TARGET_FPS
+    return f"{seconds / 3600:g} h" if seconds >= 3600 else f"{seconds:g} s"
+
+
+def _clashes(args: argparse.Namespace, level: Level) -> list[str]:
+    """Every output that names a file the run reads (the level, a file it uses, the input
+    script) or the same file as another output; asked before the first tick."""
+    outputs = [(option, path) for option in OUTPUT_OPTIONS
+               if (path := getattr(args, option)) is not None]
+    if not outputs:
+        return []
+    inputs = level_inputs(level, given=args.level is not None)
+    if args.inputs is not None:
+        inputs.append(("the input script (--inputs)", args.inputs))
+    return clashes(outputs, inputs)
+
+
 def _open_display(headless: bool, program: str) -> str | None:
     """Start the display: the game's window, or a hidden one for a headless screenshot.
     None when it is open, else the sentence to end with (see :mod:`game.app.display`)."""
@@ -172,13 +219,15 @@ def run(args: argparse.Namespace, play_in_window: Callable[[Run], int],
     script: InputScript | None = None
     if args.inputs:
         try:
-            script = InputScript.parse(
-                read_small_text(args.inputs, MAX_SCRIPT_BYTES, "the input script", pipes=True),
-                shown(args.inputs))
+            text = read_small_text(args.inputs, MAX_SCRIPT_BYTES, "the input script",
+                                   pipes=True)
+            script = InputScript.parse(text, shown(args.inputs))
         except FileProblem as error:
             return fail(str(error), EXIT_BAD_FILE)
         except InputScriptError as error:
             return fail(str(error), EXIT_USAGE)
+        if args.headless and args.ticks is None and (late := _too_late(script, text, args)):
+            return fail(late, EXIT_USAGE)
     first_level = args.level or FIRST_LEVEL
     needs_pictures = not args.headless or args.screenshot is not None
     if needs_pictures and (problem := _open_display(args.headless, program)) is not None:
@@ -194,6 +243,8 @@ def run(args: argparse.Namespace, play_in_window: Callable[[Run], int],
         # overlay's query log is kept only while the overlay is on.
         measure = Measure(penetration=args.report is not None, queries=bool(args.debug))
         campaign = Campaign(first_level, loader=loader, measure=measure)
+        if clashing := _clashes(args, campaign.world.level):
+            return fail("\n".join(clashing), EXIT_BAD_FILE)
         game_run = Run(campaign, script, args)
         status = run_headless(game_run) if args.headless else play_in_window(game_run)
         return EXIT_BAD_FILE if game_run.output_failed else status
@@ -229,6 +280,10 @@ def run_headless(game_run: Run) -> int:
                 break
     except KeyboardInterrupt:
         status = EXIT_INTERRUPTED
+    if status == EXIT_OK and not game_run.finished() and game_run.campaign.ticks >= limit:
+        print(f"the run stopped after {limit:,} ticks ({_game_time(limit)} of game time), "
+              "the end of a headless run without --ticks — give --ticks N to run longer",
+              file=sys.stderr)
     frame = None
     if game_run.args.screenshot:
         frame = render_frame(game_run.campaign, debug=game_run.args.debug,

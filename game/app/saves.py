@@ -12,6 +12,10 @@ What it teaches:
   * **Write atomically.** A save is written to a temporary file and renamed over the old one
     (:func:`game.app.files.write_text_atomically`), so a crash or a full disk mid-write leaves
     the old save, never half of a new one.
+  * **Progress belongs to the campaign's own maps**, known by their files, not their names
+    (:class:`CampaignMaps`): a downloaded ``01-first-steps.tmx`` played with ``--level``
+    is another map that happens to share a name, so finishing it (or the level its
+    ``next_level`` leads to) never changes a best time nor unlocks a level.
   * **Never wipe what you could not read.** A file that is not valid JSON, holds values of
     the wrong type, or cannot be opened is renamed aside
     (``progress.json.corrupt-20250131-142501``) before anything can overwrite it, and the
@@ -31,7 +35,7 @@ from __future__ import annotations
 import json
 import os
 import sys
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from datetime import datetime
 from pathlib import Path
@@ -39,6 +43,7 @@ from typing import Any, NamedTuple, TypeVar
 
 from game.app.files import FileProblem, read_small_text, remove_orphans, write_text_atomically
 from game.sim.campaign import Campaign
+from game.sim.level import Level
 from game.sim.world import Event, EventKind, World
 
 APP_DIR_NAME = "tile-hopper"
@@ -291,6 +296,47 @@ class Attempt:
         following = level.next_level
         return Finish(level.path.name, campaign.ticks - self.started_tick, self.coins,
                       None if following is None else following.name)
+
+
+@dataclass(frozen=True)
+class CampaignMaps:
+    """The campaign's own map files, by their real paths (links followed, ``..`` folded
+    away): the only maps whose finishes the progress keeps.
+
+    >>> import tempfile
+    >>> shipped = Path(tempfile.mkdtemp()) / "01-first-steps.tmx"
+    >>> maps = CampaignMaps.of([shipped])
+    >>> maps.holds(shipped), maps.holds(Path(tempfile.mkdtemp()) / "01-first-steps.tmx")
+    (True, False)
+    """
+
+    real_paths: frozenset[str]
+
+    @classmethod
+    def of(cls, paths: Iterable[Path]) -> CampaignMaps:
+        return cls(frozenset(real for path in paths if (real := _real(path)) is not None))
+
+    def holds(self, path: Path | None) -> bool:
+        """True when ``path`` is one of the campaign's map files, by whatever name."""
+        real = None if path is None else _real(path)
+        return real is not None and real in self.real_paths
+
+    def kept(self, finish: Finish, level: Level) -> Finish | None:
+        """What of ``finish`` (of ``level``) the progress may keep: nothing when the map
+        finished is not one of the campaign's files; no unlock when the map its
+        ``next_level`` names is not one of them."""
+        if not self.holds(level.path):
+            return None
+        if not self.holds(level.next_level):
+            return finish._replace(next_level=None)
+        return finish
+
+
+def _real(path: Path) -> str | None:
+    try:
+        return os.path.realpath(path)
+    except (OSError, ValueError):  # a name the system refuses is no campaign map
+        return None
 
 
 def _json_type(value: object) -> str:

@@ -56,7 +56,7 @@ from game.app.menus import (
 )
 from game.app.render import WorldRenderer
 from game.app.run import EXIT_OK, TARGET_FPS, Run, held_keys
-from game.app.saves import Attempt, Progress, progress_file
+from game.app.saves import Attempt, CampaignMaps, Progress, progress_file
 from game.app.screens import (
     RELOAD_FAILED,
     draw_error_banner,
@@ -163,6 +163,7 @@ class GameWindow:
         self.pads, self.stick_edges, self.held_over = Gamepads(), StickEdges(), HeldOver()
         self.using_pad = False  # the title shows the controls of the device last pressed
         self.levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks, bests each frame
+        self.campaign_maps = CampaignMaps.of(info.path for info in self.levels)  # saved maps
         self.entries = level_entries(self.levels, self.progress)
         self.attempt = Attempt()
         self.banner: Banner | None = None
@@ -321,10 +322,12 @@ class GameWindow:
             self.audio.play(tick_event.kind)
         finish = self.attempt.after_tick(run.campaign, events)
         if finish is not None:
-            self.banner = Banner(run.campaign.results[-1],
-                                 self.progress.best_ticks.get(finish.level), world=finishing)
-            self.progress.record(finish)
-            self.save_progress()
+            kept = self.campaign_maps.kept(finish, finishing.level)  # None: not the campaign's
+            best = None if kept is None else self.progress.best_ticks.get(finish.level)
+            self.banner = Banner(run.campaign.results[-1], best, world=finishing)
+            if kept is not None:
+                self.progress.record(kept)
+                self.save_progress()
         return not (run.finished() or finish is not None)
 
     # The level-end banner: a pause of the window only; the simulation waits for it.

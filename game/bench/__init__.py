@@ -35,15 +35,20 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from game.bench.sizes import Sizes
+    from game.bench.targets import Target
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the bench; 0 when done, 1 with ``--check`` and a failed target, 2 bad usage."""
     os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
     os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
-    from game.bench.run import CHARTS, DEFAULT_OUT, redraw, run
+    from game.bench.run import DEFAULT_OUT
     from game.bench.sizes import FULL, QUICK
 
     parser = argparse.ArgumentParser(
@@ -59,23 +64,19 @@ def main(argv: Sequence[str] | None = None) -> int:
                         help="measure nothing: draw the charts, targets and README again from "
                              "the CSVs already in DIR (made by a run of the same size)")
     args = parser.parse_args(argv)
-    from game.app.files import folder_problem
+    from game.app.files import FileProblem, folder_problem
 
     if (problem := folder_problem(args.out)) is not None:
         parser.error(f"--out: {problem}")
     sizes = QUICK if args.quick else FULL
     echo = lambda line: print(line, flush=True)  # noqa: E731
-    if args.redraw:
-        missing = [c.name for c in CHARTS if not (args.out / f"{c.name}.csv").is_file()]
-        if missing:
-            print(f"game.bench: {args.out}: no {missing[0]}.csv to redraw from; run "
-                  "python -m game.bench first", file=sys.stderr)
-            return 2
-        print(f"game.bench: redrawing the {sizes.name} run in {args.out}", flush=True)
-        _, checked = redraw(sizes, args.out, echo)
-    else:
-        print(f"game.bench: {sizes.name} run, writing to {args.out}", flush=True)
-        _, checked = run(sizes, args.out, echo)
+    try:
+        checked = _measure_or_redraw(args.redraw, sizes, args.out, echo)
+    except FileProblem as problem:  # a file of DIR that cannot be read or written
+        print(f"game.bench: {problem}", file=sys.stderr)
+        return 1
+    if checked is None:
+        return 2
     width = max(len(t.claim) for t in checked)
     for target in checked:
         _, measured, limit, _ = target.row()
@@ -87,3 +88,21 @@ def main(argv: Sequence[str] | None = None) -> int:
     print(f"{sum(t.passed for t in checked)} of {len(checked)} targets met"
           + (f", {len(skipped)} skipped" if skipped else "") + ".")
     return 1 if args.check and failed else 0
+
+
+def _measure_or_redraw(again: bool, sizes: Sizes, out: Path,
+                       echo: Callable[[str], None]) -> list[Target] | None:
+    """Measure into ``out`` (or, ``again``, redraw from its CSVs); the targets checked, or
+    None when there is nothing to redraw from (said on stderr)."""
+    from game.bench.run import CHARTS, redraw, run
+
+    if again:
+        missing = [c.name for c in CHARTS if not (out / f"{c.name}.csv").is_file()]
+        if missing:
+            print(f"game.bench: {out}: no {missing[0]}.csv to redraw from; run "
+                  "python -m game.bench first", file=sys.stderr)
+            return None
+        print(f"game.bench: redrawing the {sizes.name} run in {out}", flush=True)
+        return redraw(sizes, out, echo)[1]
+    print(f"game.bench: {sizes.name} run, writing to {out}", flush=True)
+    return run(sizes, out, echo)[1]

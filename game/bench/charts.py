@@ -24,6 +24,8 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.layout_engine import ConstrainedLayoutEngine
 
+from game.app.files import write_atomically
+
 # One colour per method across every chart (matplotlib's colour-blind-friendly cycle).
 PALETTE = ("#0072B2", "#E69F00", "#009E73", "#D55E00", "#CC79A7", "#56B4E9", "#000000",
            "#F0E442")
@@ -48,7 +50,11 @@ def save(figure: Figure, path: Path, footnote: str) -> Path:
     """
     figure.text(0.005, 0.002, footnote, fontsize=7, color="#555555", ha="left", va="bottom")
     canvas = FigureCanvasAgg(figure)
-    canvas.print_png(path)  # type: ignore[no-untyped-call]  # the Agg canvas has no hints
+
+    def write(tmp: Path) -> None:
+        canvas.print_png(tmp)  # type: ignore[no-untyped-call]  # the Agg canvas has no hints
+
+    write_atomically(path, write, ".png")
     return path
 
 

@@ -15,7 +15,6 @@ more than the frame it sits on.
 
 from __future__ import annotations
 
-import argparse
 import os
 from dataclasses import dataclass
 from statistics import median
@@ -23,19 +22,21 @@ from time import perf_counter
 
 import pygame
 
+from game.app.arguments import Parser, run_command, whole_number
 from game.app.assets import load_assets
 from game.app.debug_overlay import draw_debug
 from game.app.hud import draw_hud
 from game.app.render import WorldRenderer
+from game.app.run import input_script
 from game.bench.game_step import level_to_play
 from game.bench.timing import collector_off
 from game.levels import load_level
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
 from game.sim.campaign import Campaign, Outcome
-from game.sim.inputs import InputScript
 from game.sim.world import Measure
 
 MS_PER_S = 1000.0
+MAX_TICKS = 60 * 60 * 60  # an hour of game time: the measured level ends long before
 OVERLAY_FPS = 60.0  # the frame rate the overlay's panel is told (it only prints it)
 
 
@@ -70,7 +71,7 @@ def measure(max_ticks: int | None = None) -> DrawingCost:
     # As in the window with the overlay on: the tick keeps the query log the overlay draws.
     campaign = Campaign(level_path, loader=lambda path: load_level(path, images=True),
                         measure=Measure(queries=True))
-    script = InputScript.load(script_path)
+    script = input_script(script_path)
     ticks, frames, overlays = [], [], []
     with collector_off():
         while campaign.outcome is Outcome.RUNNING and (max_ticks is None
@@ -94,9 +95,16 @@ def measure(max_ticks: int | None = None) -> DrawingCost:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m game.bench.drawing",
-                                     description="Time a frame, its overlay and its tick.")
-    parser.add_argument("--ticks", type=int, default=None, help="stop after this many ticks")
+    """``python -m game.bench.drawing``: checked numbers, Ctrl-C and a closed standard
+    output each end it with a status, as every command does (:func:`run_command`)."""
+    return run_command(lambda: _main(argv))
+
+
+def _main(argv: list[str] | None) -> int:
+    parser = Parser(prog="python -m game.bench.drawing",
+                    description="Time a frame, its overlay and its tick.")
+    parser.add_argument("--ticks", type=whole_number(1, MAX_TICKS, "ticks"), default=None,
+                        metavar="N", help="stop after this many ticks")
     args = parser.parse_args(argv)
     print("\n".join(measure(args.ticks).lines()))
     return 0

@@ -31,6 +31,7 @@ from dataclasses import replace
 from pathlib import Path
 from statistics import median
 
+from game.app.run import input_script
 from game.bench import charts
 from game.bench.intervals import Interval, paired_ratio
 from game.bench.records import Row, values
@@ -202,7 +203,7 @@ def measure(sizes: Sizes) -> list[Row]:
     rows = [Row(CHART, f"largest level: {largest.name}", "is played", 0,
                 float(level == largest), "1 = yes, 0 = it has no script yet")]
     for round_no in range(sizes.play_rounds):
-        spent, won = play(level, InputScript.load(script))
+        spent, won = play(level, input_script(script))
         rows += [Row(CHART, played, str(tick), round_no, s * 1e3, TICK)
                  for tick, s in enumerate(spent)]
         rows.append(Row(CHART, played, "won", round_no, float(won), "1 = reached the exit"))

@@ -20,12 +20,20 @@ from pathlib import Path
 
 import pygame
 
+from game.app.files import FileProblem, read_small_text
+
+MAX_CPUINFO_BYTES = 4 * 1024 * 1024  # /proc/cpuinfo: about 1 kB a core
+
 
 def cpu_name() -> str:
     """The CPU's model name where the system says it (Linux, macOS), else the architecture."""
     cpuinfo = Path("/proc/cpuinfo")
     if cpuinfo.exists():
-        for line in cpuinfo.read_text(encoding="utf-8", errors="replace").splitlines():
+        try:
+            text = read_small_text(cpuinfo, MAX_CPUINFO_BYTES, "the CPU's description")
+        except FileProblem:
+            text = ""
+        for line in text.splitlines():
             if line.startswith("model name"):
                 return line.split(":", 1)[1].strip()
     return platform.processor() or platform.machine() or "unknown CPU"

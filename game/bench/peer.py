@@ -45,6 +45,7 @@ from typing import Any, NamedTuple, Protocol
 
 import pygame
 
+from game.app.run import input_script
 from game.bench import charts, plain_sweep
 from game.bench.intervals import median_interval, paired_ratio
 from game.bench.records import Row, values
@@ -55,7 +56,6 @@ from game.collision.axis_sweep import move_x, move_y
 from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import TileGrid
 from game.levels import LEVELS_DIR, load_level
-from game.sim.inputs import InputScript
 from game.sim.tuning import Tuning
 from game.sim.world import World
 
@@ -253,7 +253,7 @@ def played_moves() -> tuple[Sample, ...]:
 
     The play is the same every time (the tick is deterministic), so it is played once.
     """
-    script = InputScript.load(SCRIPT)
+    script = input_script(SCRIPT)
     world = World(load_level(LEVEL))
     last = script.events[-1].tick if script.events else 0
     samples: list[Sample] = []
@@ -403,7 +403,7 @@ def _replay(mover: Mover, moves: Sequence[Sample]) -> Callable[[], tuple[float, 
 
 def _world_steps(ticks: int) -> Callable[[], tuple[float, int]]:
     """Play The Summit's first ``ticks`` ticks on a fresh world: time in steps, bodies moved."""
-    level, script = load_level(LEVEL), InputScript.load(SCRIPT)
+    level, script = load_level(LEVEL), input_script(SCRIPT)
     held = [script.held_at(tick) for tick in range(ticks)]
 
     def run() -> tuple[float, int]:

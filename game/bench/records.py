@@ -27,7 +27,10 @@ from collections.abc import Iterable, Sequence
 from pathlib import Path
 from typing import NamedTuple
 
+from game.app.files import read_small_text, write_text_atomically
+
 COLUMNS = ("chart", "method", "parameter", "round", "value", "unit")
+MAX_CSV_BYTES = 64 * 1024 * 1024  # a full run's measurements are well under 1 MB
 
 
 class Row(NamedTuple):
@@ -53,14 +56,17 @@ def csv_text(rows: Iterable[Row]) -> str:
 
 
 def write_csv(path: Path, rows: Iterable[Row]) -> None:
-    path.write_text(csv_text(rows), encoding="utf-8")
+    """Write the rows atomically (:func:`game.app.files.write_text_atomically`)."""
+    write_text_atomically(path, csv_text(rows))
 
 
 def read_csv(path: Path) -> list[Row]:
-    """Rows back from a file written by :func:`write_csv`."""
-    with path.open(encoding="utf-8", newline="") as handle:
-        return [Row(r["chart"], r["method"], r["parameter"], int(r["round"]),
-                    float(r["value"]), r["unit"]) for r in csv.DictReader(handle)]
+    """Rows back from a file written by :func:`write_csv`, read through the one bounded
+    open (:func:`game.app.files.read_small_text`)."""
+    text = read_small_text(path, MAX_CSV_BYTES, "the measurements")
+    return [Row(r["chart"], r["method"], r["parameter"], int(r["round"]),
+                float(r["value"]), r["unit"])
+            for r in csv.DictReader(io.StringIO(text, newline=""))]
 
 
 def values(rows: Iterable[Row], *, method: str | None = None, parameter: str | None = None,

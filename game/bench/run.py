@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from time import perf_counter, process_time
 
+from game.app.files import write_text_atomically
 from game.bench import (
     broad,
     caching,
@@ -93,11 +94,10 @@ def conclude(results: dict[str, list[Row]], sizes: Sizes, out: Path, footnote: s
     :mod:`game.collision.methods` this run disagrees with."""
     started = perf_counter()
     checked = targets.check(results, sizes)
-    (out / "targets.csv").write_text(targets.csv_text(checked), encoding="utf-8")
-    (out / "targets.md").write_text(targets.markdown(checked) + "\n", encoding="utf-8")
+    write_text_atomically(out / "targets.csv", targets.csv_text(checked))
+    write_text_atomically(out / "targets.md", targets.markdown(checked) + "\n")
     targets.draw(checked, out, footnote)
-    (out / "README.md").write_text(readme.text(results, checked, sizes, footnote),
-                                   encoding="utf-8")
+    write_text_atomically(out / "README.md", readme.text(results, checked, sizes, footnote))
     echo(f"{'targets':>14}: {perf_counter() - started:5.1f} s  -> targets.csv, .md, .png, "
          "README.md")
     for name, in_code, measured in readme.choices(results):

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from game.app.arguments import Parser, run_command, whole_number
-from game.app.files import FileProblem, output_problem, write_atomically
+from game.app.files import FileProblem, output_problem, save_image
 from game.demos.crates import CrateScene, CrateTuning
 from game.sim.tuning import TICK_S
 
@@ -70,6 +70,8 @@ def run(crates: int, ticks: int, seed: int = 1) -> StressResult:
 
 
 def screenshot(scene: CrateScene, path: Path) -> None:
+    """Draw ``scene`` and save it at ``path`` through the one atomic write
+    (:func:`game.app.files.save_image`); a FileProblem if it cannot be written."""
     import os
 
     os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
@@ -83,7 +85,7 @@ def screenshot(scene: CrateScene, path: Path) -> None:
         pygame.draw.rect(surface, (90, 60, 30), crate.box.to_rect(), width=1)
     label = f"{len(scene.crates)} crates: {type(scene.broad_phase).__name__}"
     surface.blit(pygame.font.Font(None, 28).render(label, True, (255, 255, 255)), (8, 8))
-    pygame.image.save(surface, str(path))
+    save_image(surface, path)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -110,7 +112,7 @@ def _main(argv: list[str] | None) -> int:
         for _ in range(args.ticks):
             scene.step(TICK_S)
         try:
-            write_atomically(args.screenshot, lambda tmp: screenshot(scene, tmp))
+            screenshot(scene, args.screenshot)
         except FileProblem as error:
             print(error, file=sys.stderr)
             return EXIT_BAD_FILE

@@ -14,12 +14,14 @@ here.
 
 from __future__ import annotations
 
+import io
 import math
 from collections.abc import Sequence
 
 import pygame
 
-from game.app.assets import ASSETS, BIG_FONT_FILE, BIG_FONT_PX, FONT_FILE, FONT_PX
+from game.app.assets import ASSETS, BIG_FONT_FILE, BIG_FONT_PX, FONT_FILE, FONT_PX, MAX_ASSET_BYTES
+from game.app.files import FileProblem, read_small_bytes
 from game.collision.aabb import Box
 
 Color = tuple[int, int, int]
@@ -61,8 +63,9 @@ def font(size_pt: int = TEXT_PT) -> pygame.font.Font:
             pygame.font.init()
         name, size_px = (BIG_FONT_FILE, BIG_FONT_PX) if big else (FONT_FILE, FONT_PX)
         try:
-            _fonts[big] = pygame.font.Font(str(ASSETS / name), size_px)
-        except (pygame.error, OSError):
+            data = read_small_bytes(ASSETS / name, MAX_ASSET_BYTES, "the font")
+            _fonts[big] = pygame.font.Font(io.BytesIO(data), size_px)
+        except (pygame.error, FileProblem):
             _fonts[big] = pygame.font.Font(None, size_pt)
     return _fonts[big]
 

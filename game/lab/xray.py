@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import pygame
 
-from game.app.assets import ASSETS, COIN_PX, SPRITE_PX, strip
+from game.app.assets import ASSETS, COIN_PX, MAX_ASSET_BYTES, SPRITE_PX, strip
+from game.app.files import load_image
 from game.collision.aabb import Box
 from game.collision.circles import Circle
 from game.lab import canvas
@@ -34,7 +35,7 @@ class Prop(pygame.sprite.Sprite):
 
 def load_frame(name: str, frame_px: int) -> pygame.Surface:
     """The first frame of a sprite strip in ``assets/``, drawn ``SCALE`` times bigger."""
-    sheet = pygame.image.load(str(ASSETS / name))
+    sheet = load_image(ASSETS / name, MAX_ASSET_BYTES, "the sprite sheet")
     frame = strip(sheet, frame_px, frame_px)[0]
     return pygame.transform.scale(frame, (frame_px * SCALE, frame_px * SCALE))
 

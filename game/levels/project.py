@@ -37,18 +37,20 @@ from __future__ import annotations
 
 import json
 import xml.etree.ElementTree as ET
-from functools import partial
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from game.levels import LEVELS_DIR
 from game.levels.classes import CLASSES, Member, TiledClass
 from game.levels.outputs import replace_atomically
+from game.levels.reading import ReadProblem, read_text
 
 PROJECT_FILE = LEVELS_DIR / "tile-hopper.tiled-project"
 PROJECT_FILE_1_8 = LEVELS_DIR / "tile-hopper-1.8.tiled-project"
 OBJECT_TYPES_FILE = LEVELS_DIR / "objecttypes.xml"
 PROPERTY_TYPES_FILE = LEVELS_DIR / "propertytypes.json"
+MAX_GENERATED_BYTES = 4 * 1024 * 1024  # each generated file is a few kB
 
 PYTHON = "python"  # the first on the PATH: start Tiled where the game's Python is active
 COMPATIBLE_WITH_TILED_1_8 = 1080  # Tiled's "compatibility version" for files 1.8 reads
@@ -144,9 +146,10 @@ def stale_files() -> list[Path]:
     """The generated files whose committed text differs from what would be generated."""
     stale = []
     for path, text in generated_files().items():
-        try:
-            current = path.read_text(encoding="utf-8")
-        except OSError:
+        try:  # read to be written again by write_files: not an input of the run
+            current: str | None = read_text(path, MAX_GENERATED_BYTES, "the generated file",
+                                            updated=True)
+        except ReadProblem:
             current = None
         if current != text:
             stale.append(path)
@@ -154,9 +157,17 @@ def stale_files() -> list[Path]:
 
 
 def write_files() -> list[Path]:
-    """Write every generated file; return the ones that changed."""
+    """Write every generated file that changed, each through the one atomic write
+    (:func:`game.levels.outputs.replace_atomically`); return the ones that changed."""
     changed = stale_files()
     for path, text in generated_files().items():
         if path in changed:
-            replace_atomically(path, partial(Path.write_text, data=text, encoding="utf-8"))
+            replace_atomically(path, _text_writer(text))
     return changed
+
+
+def _text_writer(text: str) -> Callable[[Path], None]:
+    def write(tmp: Path) -> None:
+        tmp.write_text(text, encoding="utf-8")
+
+    return write

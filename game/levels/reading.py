@@ -51,6 +51,7 @@ FIX_READ = "check that the file is there and that you may read it"
 FIX_REGULAR = "give the path of a file saved by Tiled, not a pipe, device or folder"
 FIX_MISSING = "check the path, or save the file from Tiled first"
 MAX_PIPE_WAIT_S = 10.0  # a pipe read for a file may stay silent this long, no longer
+MAX_PIPE_READ_S = 60.0  # and may take this long in all, however often something comes
 PIPE_POLL_S = 0.01
 CHUNK_BYTES = 1 << 20  # read at most this much at a time
 
@@ -101,11 +102,16 @@ def _identity(status: os.stat_result) -> tuple[int, int, int]:
 
 def _read_pipe(descriptor: int, max_bytes: int, what: str) -> bytes:
     """Everything written into the pipe until its writer closes it, waiting at most
-    MAX_PIPE_WAIT_S for each piece: a pipe nobody writes to is a problem, not a hang.
+    MAX_PIPE_WAIT_S for each piece and MAX_PIPE_READ_S in all: a pipe nobody writes to, or
+    one written a byte at a time for ever, is a problem, not a hang.
     Until a writer has appeared, an empty read means "nobody yet", not "the end"."""
     data, writer_seen = bytearray(), False
     deadline = time.monotonic() + MAX_PIPE_WAIT_S
+    end = time.monotonic() + MAX_PIPE_READ_S  # a writer sending a byte now and then
     while len(data) <= max_bytes:
+        if time.monotonic() > end:
+            raise ReadProblem(f"{what} is a pipe that was still being written after "
+                              f"{MAX_PIPE_READ_S:g} s", "write it into a file first")
         try:
             chunk: bytes | None = os.read(descriptor, min(CHUNK_BYTES, max_bytes + 1))
         except BlockingIOError:  # a writer is there, with nothing to say yet

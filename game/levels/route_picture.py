@@ -15,7 +15,6 @@ see why a level can or cannot be finished; nothing here changes the level or the
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from pathlib import Path
 
 import pygame
 
@@ -98,7 +97,3 @@ def draw_route(level: Level, route: Sequence[Box], furthest: Box | None,
         picture = pygame.transform.smoothscale(picture, size)
     return picture
 
-
-def save_route(path: Path, level: Level, route: Sequence[Box], furthest: Box | None,
-               reach: Iterable[tuple[int, int]] | None = None) -> None:
-    pygame.image.save(draw_route(level, route, furthest, reach), str(path))

@@ -143,11 +143,10 @@ def replay_proof(level: Level, script: InputScript) -> tuple[bool, int]:
     return False, campaign.ticks
 
 
-def judge_proof(level: Level, script_path: Path, script: InputScript | None = None
-                ) -> Verdict:
+def judge_proof(level: Level, script_path: Path, script: InputScript) -> Verdict:
     """SOLVED when the recorded script wins the level; else a finding about the script.
-    ``script``: the script at ``script_path``, when the caller has read it already."""
-    script = InputScript.load(script_path) if script is None else script
+    ``script``: the script read from ``script_path`` (through the one bounded open,
+    :func:`game.levels.checking.read_proof`)."""
     won, ticks = replay_proof(level, script)
     if won:
         return Verdict(Kind.SOLVED, None, f"solved: the recorded win {script_path.name} "

@@ -25,7 +25,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from enum import Enum
-from pathlib import Path
 
 from game.sim.whole_numbers import NumberTextError, read_whole
 
@@ -123,10 +122,6 @@ class InputScript:
             events.append(event)
         return cls(events)
 
-    @classmethod
-    def load(cls, path: Path) -> InputScript:
-        """Read a script file; an unreadable file is an :class:`OSError` for the caller."""
-        return cls.parse(path.read_text(encoding="utf-8"), str(path))
 
     def held_at(self, tick: int) -> Actions:
         """The actions held during ``tick``; call with increasing ticks."""

@@ -17,9 +17,13 @@ pygame calls on off-screen surfaces, deterministically, so it can be released as
 from __future__ import annotations
 
 import math
+import sys
 from pathlib import Path
 
 import pygame
+
+from game.app.files import save_image, write_text_atomically
+from game.levels.closed_output import quiet_when_output_closes
 
 ASSETS = Path(__file__).resolve().parents[2] / "assets"
 TILE = 16
@@ -75,9 +79,9 @@ def tileset_tsx() -> str:
 
 
 def main() -> None:
-    pygame.image.save(draw_strip(), str(ASSETS / "banner.png"))
-    (ASSETS / "banner.tsx").write_text(tileset_tsx(), encoding="utf-8")
+    save_image(draw_strip(), ASSETS / "banner.png")
+    write_text_atomically(ASSETS / "banner.tsx", tileset_tsx())
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(quiet_when_output_closes(main))

@@ -32,11 +32,13 @@ from __future__ import annotations
 
 import math
 import random
+import sys
 from collections.abc import Callable, Mapping, Sequence
 from functools import partial
 
 import pygame
 
+from game.app.files import save_image, write_text_atomically
 from game.app.places import (
     DIRT,
     DIRT_DARK,
@@ -50,6 +52,7 @@ from game.app.places import (
     SCENERY_FLOOR_ROW,
     Place,
 )
+from game.levels.closed_output import quiet_when_output_closes
 from game.levels.shipped import ASSETS_DIR
 from game.tools.pixel_font import write_fonts
 
@@ -1573,13 +1576,13 @@ def main() -> None:
         surface = draw()
         if surface.get_size() != size:
             raise RuntimeError(f"{name} is {surface.get_size()}, expected {size}")
-        pygame.image.save(surface, str(ASSETS / name))
-    (ASSETS / "tiles.tsx").write_text(tileset_tsx(), encoding="utf-8")
-    (ASSETS / "terrain.tsx").write_text(terrain_tsx(), encoding="utf-8")
+        save_image(surface, ASSETS / name)
+    write_text_atomically(ASSETS / "tiles.tsx", tileset_tsx())
+    write_text_atomically(ASSETS / "terrain.tsx", terrain_tsx())
     fonts = write_fonts(ASSETS)
     print(f"wrote {len(IMAGES) + 2 + len(fonts)} files to {ASSETS} "
           "(the credits are in assets/README.md)")
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(quiet_when_output_closes(main))

@@ -32,7 +32,9 @@ from pathlib import Path
 
 import pygame
 
+from game.app.files import load_image, save_image
 from game.levels import FIRST_LEVEL, LEVELS_DIR
+from game.levels.closed_output import quiet_when_output_closes
 from game.levels.reach import jump_path
 from game.sim.tuning import Tuning
 from game.tools.art import DIRT_FILL, SPIKES, TILE_COUNT
@@ -42,6 +44,7 @@ ROOT = Path(__file__).resolve().parents[2]
 GUIDE = ROOT / "assets" / "guide"
 TILE = 16
 SCALE = 3  # the diagrams are drawn at 16 px a tile, then enlarged this many times
+MAX_SHEET_BYTES = 4 * 1024 * 1024  # a tile sheet of the game's own is a few kB
 SKY = (143, 211, 255)
 GRID = (120, 180, 230)
 HITBOX = (217, 83, 79)
@@ -79,7 +82,7 @@ def _canvas(cols: int, rows: int) -> pygame.Surface:
 def _save(canvas: pygame.Surface, name: str) -> None:
     big = pygame.transform.scale(canvas, (canvas.get_width() * SCALE,
                                           canvas.get_height() * SCALE))
-    pygame.image.save(big, str(GUIDE / name))
+    save_image(big, GUIDE / name)
 
 
 def _paint(canvas: pygame.Surface, sheet: pygame.Surface, shape: tuple[str, ...],
@@ -87,7 +90,7 @@ def _paint(canvas: pygame.Surface, sheet: pygame.Surface, shape: tuple[str, ...]
     """Lay ``shape`` (``#`` ground, ``^`` spikes) on ``canvas`` from column ``left``: the
     ground painted with the terrain tileset's tiles, or (``terrain=False``) the dirt tile
     everywhere."""
-    terrain_sheet = pygame.image.load(str(ROOT / "assets" / "terrain.png"))
+    terrain_sheet = load_image(ROOT / "assets" / "terrain.png", MAX_SHEET_BYTES)
     gids = [[1 + DIRT_FILL if char == "#" else 0 for char in row] for row in shape]
     if terrain:
         gids = repaint_rows(gids, 1, TERRAIN_FIRST_GID)
@@ -164,7 +167,7 @@ def route() -> None:
 
 def main() -> None:
     GUIDE.mkdir(parents=True, exist_ok=True)
-    sheet = pygame.image.load(str(ROOT / "assets" / "tiles.png"))
+    sheet = load_image(ROOT / "assets" / "tiles.png", MAX_SHEET_BYTES)
     player_point(sheet)
     reach(sheet)
     terrain(sheet)
@@ -173,4 +176,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(quiet_when_output_closes(main))

@@ -17,6 +17,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+from game.levels.closed_output import quiet_when_output_closes
+
 ROOT = Path(__file__).resolve().parents[2]
 SHOTS = Path("assets") / "screenshots" / "lab"
 DEFAULT_FRAMES = 121  # the first frame, then a whole timing window (``game.lab.cost.WINDOW``)
@@ -41,4 +43,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(quiet_when_output_closes(main))

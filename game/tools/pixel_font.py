@@ -25,6 +25,8 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
+from game.app.files import write_text_atomically
+
 ASCENT_PX = 7  # rows above the baseline: capitals and digits are this tall
 DESCENT_PX = 2  # rows below it: g j p q y , ;
 LETTER_GAP_PX = 1  # the empty column after every glyph
@@ -207,6 +209,6 @@ def write_fonts(folder: Path) -> list[Path]:
     written = []
     for name, scale in (("font.bdf", 1), ("font-big.bdf", BIG_SCALE)):
         path = folder / name
-        path.write_text(bdf_text(scale), encoding="ascii")
+        write_text_atomically(path, bdf_text(scale))  # ASCII: the same bytes in UTF-8
         written.append(path)
     return written

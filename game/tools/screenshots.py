@@ -26,13 +26,15 @@ import pygame
 from game.app.assets import load_assets
 from game.app.banner import BANNER_S, Banner
 from game.app.debug_overlay import PanelMode
+from game.app.files import save_image
 from game.app.frame import render_frame
 from game.app.hud import draw_text
 from game.app.places import place_of
+from game.app.run import input_script
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
+from game.levels.closed_output import quiet_when_output_closes
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
 from game.sim.campaign import Campaign
-from game.sim.inputs import InputScript
 from game.sim.world import Measure
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -73,7 +75,7 @@ def level_end_picture(path: Path) -> None:
     os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
     pygame.display.init()
     pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX))
-    script = InputScript.load(ROOT / "tests" / "scripts" / f"{FIRST_LEVEL.stem}.txt")
+    script = input_script(ROOT / "tests" / "scripts" / f"{FIRST_LEVEL.stem}.txt")
     campaign = Campaign(FIRST_LEVEL, loader=lambda level: load_level(level, images=True))
     finishing = campaign.world
     while not campaign.results:
@@ -83,7 +85,7 @@ def level_end_picture(path: Path) -> None:
     banner.advance(BANNER_S / 2)  # every line is up by then
     frame = render_frame(campaign, debug=False, world=finishing)
     banner.draw(frame, load_assets())
-    pygame.image.save(frame, str(path))
+    save_image(frame, path)
     pygame.display.quit()
 
 
@@ -98,7 +100,7 @@ def full_panel_picture(path: Path) -> None:
     os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
     pygame.display.init()
     pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX))
-    script = InputScript.load(ROOT / "tests" / "scripts" / f"{FIRST_LEVEL.stem}.txt")
+    script = input_script(ROOT / "tests" / "scripts" / f"{FIRST_LEVEL.stem}.txt")
     campaign = Campaign(FIRST_LEVEL, loader=lambda level: load_level(level, images=True),
                         measure=Measure(queries=True))
     tick_s = 0.0
@@ -108,7 +110,7 @@ def full_panel_picture(path: Path) -> None:
         tick_s = time.perf_counter() - started
     frame = render_frame(campaign, debug=True, update_ms=tick_s * MS_PER_S,
                          panel=PanelMode.FULL)
-    pygame.image.save(frame, str(path))
+    save_image(frame, path)
     pygame.display.quit()
 
 
@@ -130,7 +132,7 @@ def places_sheet(path: Path) -> None:
                             rows * (VIEW_H_PX + SHEET_GAP_PX) + SHEET_GAP_PX))
     sheet.fill(SHEET_BACK)
     for number, level in enumerate(levels):
-        script = InputScript.load(ROOT / "tests" / "scripts" / f"{level.stem}.txt")
+        script = input_script(ROOT / "tests" / "scripts" / f"{level.stem}.txt")
         campaign = Campaign(level, loader=lambda p: load_level(p, images=True))
         while campaign.ticks < PLACES_TICK and not campaign.results:
             campaign.tick(script.held_at(campaign.ticks))
@@ -142,7 +144,7 @@ def places_sheet(path: Path) -> None:
         row, col = divmod(number, SHEET_COLUMNS)
         sheet.blit(frame, (SHEET_GAP_PX + col * (VIEW_W_PX + SHEET_GAP_PX),
                            SHEET_GAP_PX + row * (VIEW_H_PX + SHEET_GAP_PX)))
-    pygame.image.save(sheet, str(path))
+    save_image(sheet, path)
     pygame.display.quit()
 
 
@@ -162,4 +164,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(quiet_when_output_closes(main))

@@ -36,14 +36,15 @@ from __future__ import annotations
 import io
 import math
 import random
+import sys
 import wave
 from array import array
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from enum import Enum
-from pathlib import Path
 
-from game.app.files import write_atomically
+from game.app.files import write_bytes_atomically
+from game.levels.closed_output import quiet_when_output_closes
 from game.levels.shipped import ASSETS_DIR
 
 ASSETS = ASSETS_DIR
@@ -399,22 +400,15 @@ def synthesise_all() -> dict[str, bytes]:
     return files
 
 
-def _writer(data: bytes) -> Callable[[Path], None]:
-    def write(tmp: Path) -> None:
-        tmp.write_bytes(data)
-        tmp.chmod(ASSET_MODE)  # the temporary file is private to its owner; assets are not
-
-    return write
-
-
 def main() -> None:
     """Synthesise every sound and write it into ``assets/sounds``."""
     files = synthesise_all()
+    SOUNDS.mkdir(parents=True, exist_ok=True)  # the one atomic write makes no folders
     for name, data in files.items():
-        write_atomically(SOUNDS / name, _writer(data))
+        write_bytes_atomically(SOUNDS / name, data, ASSET_MODE)
     total_kb = sum(len(data) for data in files.values()) / 1024
     print(f"wrote {len(files)} sounds ({total_kb:.0f} KiB) to {SOUNDS}")
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(quiet_when_output_closes(main))

@@ -34,6 +34,7 @@ import stat
 import sys
 from pathlib import Path
 
+from game.levels.closed_output import quiet_when_output_closes
 from game.levels.errors import LevelError, excerpt
 
 VERBS = ("play", "check")
@@ -87,4 +88,4 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(quiet_when_output_closes(main))
