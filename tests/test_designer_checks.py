@@ -8,11 +8,14 @@ with its answer known: the place is asserted as the line says it and as the JSON
 from __future__ import annotations
 
 import re
+import shutil
 from pathlib import Path
 
 import pygame
 import pytest
 
+from game.collision.shapes import TileKind
+from game.levels import LEVELS_DIR, load_level
 from game.levels.checking import Finding, Options, check_map
 from game.levels.tiledata import FLIPPED_D, FLIPPED_V
 from tests.maps import write_tmx
@@ -289,3 +292,33 @@ def test_a_decoration_layer_of_tiles_with_no_class_is_fine(tmp_path: Path) -> No
     path = write_tmx(tmp_path, OPEN)
     decor_layer(path, "decor", {(9, 0): 4})  # tile 3 of t.tsx: no class
     assert found(path, "its name says") == []
+
+
+def test_the_shipped_dark_stone_and_dark_dirt_are_ground(tmp_path: Path) -> None:
+    """Tiles 14 and 15 of assets/tiles.tsx look like ground (their pictures fill the cell),
+    so a floor painted with them holds the player up, and is not called classless."""
+    (tmp_path / "assets").mkdir()
+    (tmp_path / "levels").mkdir()
+    for name in ("tiles.tsx", "tiles.png"):
+        shutil.copy(LEVELS_DIR.parent / "assets" / name, tmp_path / "assets" / name)
+    floor = ["1"] * 6 + ["15", "16"] + ["1"] * 8  # tile 0 is ground; gid 15 is tile 14
+    data = ",\n".join([",".join(["0"] * 16)] * 3 + [",".join(floor)])
+    path = tmp_path / "levels" / "dark.tmx"
+    path.write_text(f"""<?xml version="1.0" encoding="UTF-8"?>
+<map version="1.8" orientation="orthogonal" renderorder="right-down" width="16" height="4"
+ tilewidth="16" tileheight="16" infinite="0">
+ <tileset firstgid="1" source="../assets/tiles.tsx"/>
+ <layer id="1" name="ground" width="16" height="4">
+  <data encoding="csv">
+{data}
+</data>
+ </layer>
+ <objectgroup id="2" name="objects">
+  <object id="1" type="Player" x="16" y="34" width="12" height="14"/>
+  <object id="2" type="Exit" x="208" y="32" width="16" height="16"/>
+ </objectgroup>
+</map>
+""", encoding="utf-8")
+    assert found(path, "looks like ground") == []
+    kinds = {(s.col, s.row): s.kind for s in load_level(path).grid.shapes()}
+    assert kinds[(6, 3)] is kinds[(7, 3)] is TileKind.SOLID
