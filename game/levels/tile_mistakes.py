@@ -74,8 +74,9 @@ def turned_one_ways(layers: Sequence[TileLayerData], tilesets: Tilesets,
                f"this OneWay tile is painted {how}, yet a OneWay tile blocks only a body "
                f"coming down onto its top, however it is turned, so a jump from below passes "
                f"through it{_more(len(turned), 'such tiles')}",
-               "paint it unflipped (select it and press Y to flip it back, or Z to rotate "
-               "it), or paint a Solid tile where a ceiling should stop the player")
+               "paint those planks again the right way up with the Stamp Brush (Y flips the "
+               "stamp vertically and Z rotates it, until it shows the plank upright), or "
+               "paint a Solid tile where a ceiling should stop the player")
 
 
 def _beside(index: int, header: MapHeader) -> Iterator[int]:
