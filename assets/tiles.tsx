@@ -13,4 +13,6 @@
   </objectgroup>
  </tile>
  <tile id="7" type="Solid"/>
+ <tile id="14" type="Solid"/>
+ <tile id="15" type="Solid"/>
 </tileset>

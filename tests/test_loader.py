@@ -19,8 +19,10 @@ from game.collision.aabb import Box
 from game.collision.shapes import TileKind
 from game.levels import LEVELS_DIR, LevelError, check_level, load_level
 from game.levels.__main__ import main as levels_main
+from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.tuning import Tuning
+from game.sim.world import EventKind, World
 from tests.hang_guard import HANG_S, hang_guard
 from tests.in_process import Ran, call_main
 
@@ -91,6 +93,28 @@ def test_layers_keep_document_order_across_kinds_and_inside_groups(tmp_path: Pat
 def test_tiles_in_a_layer_inside_a_group_collide(tmp_path: Path) -> None:
     body = '<group name="g">' + layer("0,0,0,0,0,0,0,0,0,2,0,0") + "</group>"
     assert solids(load_level(write_map(tmp_path, body))) == {(1, 2, TileKind.ONE_WAY)}
+
+
+SUNK_EXIT = """<objectgroup id="9" name="objects">
+ <object id="1" name="hero" type="Player" x="2" y="18"><point/></object>
+ <object id="2" type="Exit" x="48" y="24" width="16" height="16"/>
+</objectgroup>"""  # an Exit half sunk into the floor of row 2
+
+
+@pytest.mark.parametrize("copies", [1, 2])
+def test_a_floor_painted_on_identical_layers_counts_once(tmp_path: Path, copies: int) -> None:
+    """The same floor painted on two layers is one floor: an Exit half sunk into it is
+    touched by walking right, as it is with one layer (the cells' shapes are not doubled)."""
+    body = "".join(layer(name=f"ground {n}") for n in range(copies))
+    path = write_map(tmp_path, body, objects=SUNK_EXIT)
+    assert check_level(path).errors == []
+    level = load_level(path)
+    assert sorted((s.col, s.row, s.box) for s in level.grid.shapes()) == [
+        (col, 2, Box(col * 16, 32, 16, 16)) for col in range(4)]
+    world = World(level)
+    won = any(event.kind is EventKind.EXIT for _ in range(120)
+              for event in world.step(frozenset({Action.RIGHT})))
+    assert won
 
 
 def test_an_infinite_map_is_refused_with_the_map_properties_fix(tmp_path: Path) -> None:

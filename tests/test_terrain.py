@@ -52,7 +52,8 @@ def test_the_tileset_keeps_its_32_tiles_and_their_classes() -> None:
     assert root.get("tilecount") == "32" and root.find("wangsets") is None
     classes = {int(t.get("id", "-1")): t.get("type") for t in root.iter("tile")}
     assert classes == {0: "Solid", 1: "Solid", 2: "Solid", 3: "Solid", 4: "Solid",
-                       5: "OneWay", 6: "Hazard", 7: "Solid"}  # as the first version had them
+                       5: "OneWay", 6: "Hazard", 7: "Solid",  # as the first version had them
+                       14: "Solid", 15: "Solid"}  # the dark stone and dirt, which look so
 
 
 def test_the_terrain_tileset_declares_a_mixed_terrain_set_with_every_edge_and_corner() -> None:

@@ -28,20 +28,35 @@ pytestmark = pytest.mark.skipif(NODE is None, reason="Node.js is not installed")
 # (python3, python) to real programs; a name not there fails to start, as in Tiled.
 TILED = r"""
 const fs = require("fs"), cp = require("child_process"), vm = require("vm");
-const [script, mapFile, programsJson, appDir] = process.argv.slice(2);
+const [script, mapFile, programsJson, appDir, stepsJson] = process.argv.slice(2);
 const programs = JSON.parse(programsJson);
-const calls = [], issues = [], logs = [];
+const steps = JSON.parse(stepsJson || "null") || [{ check: mapFile }];
+const calls = [], issues = [], logs = [], callbacks = [], occurrences = [], selections = [];
 let action = null;
+function standInMap(file, ids) {  // one object layer with a 16x16 object of each id
+    const map = { isTileMap: true, modified: false, fileName: file, tileWidth: 16,
+                  tileHeight: 16, selectedObjects: [], area: null,
+                  layers: [{ isObjectLayer: true, isGroupLayer: false,
+                             objects: ids.map((id) => ({ id, x: 0, y: 0, width: 16,
+                                                         height: 16 })) }] };
+    map.selectedArea = { set: (rect) => { map.area = rect; } };
+    return map;
+}
+function report(kind, text, callback) {  // Tiled's panel: one entry per severity and text,
+    const found = issues.findIndex(([k, t]) => k === kind && t === text);  // the newest
+    if (found >= 0) { callbacks[found] = callback; occurrences[found] += 1; return; }
+    issues.push([kind, text]); callbacks.push(callback); occurrences.push(1);  // callback
+}
 globalThis.Qt = { rect: (x, y, w, h) => ({ x, y, w, h }) };
 globalThis.tiled = {
     platform: "linux", applicationDirPath: appDir, mapEditor: null,
-    activeAsset: { isTileMap: true, modified: false, fileName: mapFile, layers: [] },
+    activeAsset: standInMap(mapFile, []),
     registerAction: (id, callback) => { action = callback; return {}; },
     extendMenu: () => {}, trigger: () => {},
-    alert: (text) => issues.push(["alert", text]),
+    alert: (text) => report("alert", text, null),
     log: (text) => logs.push(text),
-    error: (text) => issues.push(["error", text]),
-    warn: (text) => issues.push(["warn", text]),
+    error: (text, activated) => report("error", text, activated),
+    warn: (text, activated) => report("warn", text, activated),
 };
 globalThis.Process = class {
     constructor() { this.workingDirectory = ""; this.out = ""; this.err = ""; }
@@ -58,14 +73,33 @@ globalThis.Process = class {
     close() {}
 };
 vm.runInThisContext(fs.readFileSync(script, "utf8"), { filename: script });
-action();
-process.stdout.write(JSON.stringify({ calls, issues, logs }));
+for (const step of steps) {
+    if ("check" in step) {  // open the map (objects of these ids) and press the action
+        tiled.activeAsset = standInMap(step.check, step.objects || []);
+        action();
+    } else if ("save" in step) {  // the designer edits the map and saves it
+        fs.writeFileSync(step.save, step.text, "utf8");
+    } else {  // double-click the entry at this index in the Issues panel
+        const map = tiled.activeAsset;
+        map.selectedObjects = []; map.area = null;
+        const logged = logs.length;
+        callbacks[step.activate]();
+        selections.push({ objects: map.selectedObjects.map((o) => o.id), area: map.area,
+                          logs: logs.slice(logged) });
+    }
+}
+process.stdout.write(JSON.stringify({ calls, issues, logs, occurrences, selections }));
 """
 
 
-def run_extension(tmp_path: Path, map_file: Path, programs: dict[str, str]) -> dict[str, Any]:
-    """Press Map > Check Tile Hopper Map with ``map_file`` open; what the extension ran and
-    what it put in the Issues panel and the Console."""
+def run_extension(tmp_path: Path, map_file: Path, programs: dict[str, str],
+                  steps: list[dict[str, Any]] | None = None) -> dict[str, Any]:
+    """Press Map > Check Tile Hopper Map with ``map_file`` open (or take ``steps``: open a map
+    and check it, ``{"check": PATH, "objects": [IDS]}``, save a map with new text,
+    ``{"save": PATH, "text": TEXT}``, or double-click the Issues panel's entry at an index,
+    ``{"activate": N}``); what the extension ran, what it put in the
+    Issues panel (and how many times each entry was reported) and the Console, and what
+    each double-click selected."""
     harness = tmp_path / "tiled-stand-in.js"
     harness.write_text(TILED, encoding="utf-8")
     tiled_folder = tmp_path / "tiled-app"
@@ -73,7 +107,8 @@ def run_extension(tmp_path: Path, map_file: Path, programs: dict[str, str]) -> d
     assert NODE is not None
     env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
     result = subprocess.run([NODE, str(harness), str(EXTENSION), str(map_file),
-                             json.dumps(programs), str(tiled_folder)], capture_output=True,
+                             json.dumps(programs), str(tiled_folder),
+                             json.dumps(steps)], capture_output=True,
                             text=True, timeout=120, check=False, env=env)
     assert result.returncode == 0, result.stderr
     answer: dict[str, Any] = json.loads(result.stdout)
@@ -166,3 +201,50 @@ def test_the_issues_panel_gets_every_text_escaped(tmp_path: Path) -> None:
             in shown)
     assert "checked 1 map(s)\\r\\u2066" in shown
     assert all(text.isprintable() for text in shown), shown
+
+
+CAVE = ["                ", "                ", " P           D  ", "################"]
+BURIED_FLAG = '<object id="9" name="flag" type="Checkpoint" x="96" y="40" width="16" height="16"/>'
+
+
+def test_a_checkpoint_finding_selects_the_flag_not_a_tile(tmp_path: Path) -> None:
+    map_file = write_tmx(tmp_path, CAVE, extra_objects=BURIED_FLAG)
+    answer = run_extension(tmp_path, map_file, {"python3": sys.executable},
+                           [{"check": str(map_file), "objects": [1, 2, 9]}])
+    (index,) = [n for n, (_, text) in enumerate(answer["issues"]) if "Checkpoint" in text]
+    answer = run_extension(tmp_path, map_file, {"python3": sys.executable},
+                           [{"check": str(map_file), "objects": [1, 2, 9]},
+                            {"activate": index}])
+    assert answer["selections"] == [{"objects": [9], "area": None, "logs": []}]
+
+
+def test_each_check_is_told_apart_and_a_finding_it_did_not_make_again_selects_nothing(
+        tmp_path: Path) -> None:
+    """Tiled 1.8's scripts cannot clear the Issues panel: each check logs a separator, and
+    the entries of an earlier check of the map that the latest did not find again say so
+    when activated instead of selecting; an entry found again selects as it did."""
+    map_file = write_tmx(tmp_path, CAVE, extra_objects=BURIED_FLAG + '<object id="8" '
+                         'type="Checkpoint" x="160" y="40" width="16" height="16"/>')
+    check = {"check": str(map_file), "objects": [1, 2, 8, 9]}
+    answer = run_extension(tmp_path, map_file, {"python3": sys.executable}, [check])
+    texts = [text for _, text in answer["issues"]]
+    first = next(n for n, text in enumerate(texts) if "object #9 'flag'" in text)
+    second = next(n for n, text in enumerate(texts) if "object #8 ''" in text)
+    fixed = map_file.read_text(encoding="utf-8").replace(
+        'id="8" type="Checkpoint" x="160" y="40"', 'id="8" type="Checkpoint" x="160" y="16"')
+    other = write_tmx(tmp_path, CAVE, name="other.tmx")
+    answer = run_extension(tmp_path, map_file, {"python3": sys.executable}, [
+        check, {"check": str(other), "objects": [1, 2]},
+        {"save": str(map_file), "text": fixed}, check,  # flag #8 now stands on the ground
+        {"activate": first}, {"activate": second}])
+    separators = [line for line in answer["logs"] if line.startswith("==== Tile Hopper check")]
+    assert separators == [f"==== Tile Hopper check {n}: {path} ==== (the Issues panel keeps "
+                          "the findings of earlier checks until you press its Clear button)"
+                          for n, path in ((1, map_file), (2, other), (3, map_file))]
+    assert answer["occurrences"][first] == 2  # found again by the third check
+    flag, stale = answer["selections"]
+    assert flag == {"objects": [9], "area": None, "logs": []}
+    assert stale["objects"] == [] and stale["area"] is None
+    assert stale["logs"] == [f"Tile Hopper: this finding is from an earlier check of {map_file} "
+                             "and the latest check did not find it again; press Clear in the "
+                             "Issues panel to remove the findings of earlier checks"]

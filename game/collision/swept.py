@@ -1,9 +1,11 @@
 """Swept AABB: when, during one tick's move, a moving box first hits a still one.
 
-Where it sits: taught, benchmarked and shown in the lab; **the game does not run it.** The
-game's moves are :mod:`game.collision.axis_sweep`, the same idea one axis at a time against
+Where it sits: taught, benchmarked and shown in the lab; **the game's moves do not run
+it.** They are :mod:`game.collision.axis_sweep`, the same idea one axis at a time against
 the tile grid; this module does it for a whole ``(dx, dy)`` move against one box, with the
-cheaper methods it replaces set beside it for comparison.
+cheaper methods it replaces set beside it for comparison. The level checker runs
+:func:`sweep` to find where a moving platform's path first meets a wall
+(:mod:`game.levels.designer_checks`).
 
 What it teaches:
   * **Time of impact by slabs.** On each axis the two boxes' intervals overlap during an

@@ -10,30 +10,107 @@ What it teaches: an error names its place and says what happens in play, in Tile
 * **A Checkpoint whose respawn place differs from where it stands**: the player comes back
   standing on the flag's bottom edge, moved to the nearest free place when that is in a
   wall, so a flag drawn into the ground puts the player somewhere else: an error at the flag.
+* **A Checkpoint standing on spikes**: Hazard tiles inside the place the player comes back
+  to, or under it where the player would fall: a warning at the flag, naming the tile.
+* **A moving Platform whose path runs into Solid tiles**: the platform passes through the
+  wall, while a player riding it is stopped by the wall and crushed: a warning at the
+  platform, naming the first tile its box meets along the path (a swept box, so a wall
+  thinner than a step is not missed).
+* **A Coin no jump reaches**: outside everything the reach fill of
+  :mod:`game.levels.reachable` lets the player touch (an over-approximation, so a Coin it
+  names can never be collected): a warning at the coin.
 * **Objects on hidden layers** still count in the game (Tiled only hides them from view): a
   warning on each object of a class the game knows, so a forgotten Exit is found.
+* And the tile layers' mistakes of :mod:`game.levels.tile_mistakes`.
+
+Each finding about an object names the object (``object #ID 'NAME'``), so the Tiled
+extension selects the object, not a tile under it; the tile it concerns is kept in the
+place too (:class:`~game.levels.errors.Place`).
 """
 
 from __future__ import annotations
 
+import math
 import xml.etree.ElementTree as ET
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 
 from game.collision.aabb import Box
+from game.collision.axis_sweep import ground_under
 from game.collision.free_place import nearest_free_place
+from game.collision.shapes import TileKind, TileShape
+from game.collision.swept import sweep
+from game.collision.tile_grid import TileGrid
+from game.levels import tile_mistakes
 from game.levels.classes import OBJECT_CLASSES
-from game.levels.errors import Findings, LevelError, Place, object_place, tile_place
-from game.levels.layers import walk_layers
+from game.levels.errors import Findings, LevelError, Place, object_place
+from game.levels.header import MapHeader, read_header
+from game.levels.layers import LayerNode, walk_layers
 from game.levels.loader import load_level
+from game.levels.objects import MapObject, read_objects
+from game.levels.paths import sandbox_for
+from game.levels.reachable import SLACK_PX, reachable
+from game.levels.templates import Templates
+from game.levels.tiledata import decode
 from game.levels.tiledxml import read_tiled_xml
+from game.levels.tilesets import Tilesets, read_tilesets
 from game.sim.level import Level
+from game.sim.platforms import PlatformSpec
 from game.sim.whole_numbers import NumberTextError, read_whole
 from game.sim.world import World
 
 SAME_PLACE_PX = 0.5  # a respawn place this close to the flag's is the same place
 
-Finding = tuple[str, str, str, str]  # severity, where, message, fix
+Finding = tile_mistakes.Finding  # severity, where, message, fix
+
+
+@dataclass(frozen=True)
+class _Map:
+    """A map that loaded, read again with the loader's own readers: its layers (tile layers
+    decoded), tilesets and objects, for what the loaded level does not keep (ids, names,
+    flip flags)."""
+
+    header: MapHeader
+    tilesets: Tilesets
+    layers: list[LayerNode]
+    tile_layers: list[tuple[LayerNode, list[int]]]
+    objects: list[MapObject]
+
+    def of_class(self, cls: str) -> list[MapObject]:
+        return [o for o in self.objects if o.cls == cls]
+
+
+def _read_again(path: Path) -> _Map | None:
+    """The map at ``path`` read again; None if it cannot be (it changed on disk since)."""
+    findings = Findings(path)
+    try:
+        root = read_tiled_xml(path, "map", findings)
+        header = read_header(root, findings)
+        sandbox = sandbox_for(path)
+        tilesets = read_tilesets(root, path, sandbox, findings, False)
+        layers = walk_layers(root, findings)
+        tile_layers = [(layer, decode(layer.node.find("data"), header.cells))
+                       for layer in layers if layer.kind == "layer"]
+        objects = read_objects(layers, tilesets, Templates(path, sandbox, tilesets, findings,
+                                                           False), findings)
+    except (LevelError, ValueError, OSError):
+        return None
+    return _Map(header, tilesets, layers, tile_layers, objects)
+
+
+def _tile_of(grid: TileGrid, x: float, y: float) -> tuple[int, int]:
+    return math.floor(x / grid.tile_w), math.floor(y / grid.tile_h)
+
+
+def _places(objects: Sequence[MapObject], boxes: Sequence[Box], grid: TileGrid) -> list[Place]:
+    """Where to say each of ``boxes`` is: the object it was made from (a map that loaded
+    makes one of each, in order), else its top-left tile."""
+    if len(objects) == len(boxes):
+        return [Place(o.place, o.id, _tile_of(grid, b.x, b.y)) for o, b in zip(objects, boxes,
+                                                                                  strict=True)]
+    return [Place(f"tile ({col},{row})", tile=(col, row))
+            for col, row in (_tile_of(grid, b.x, b.y) for b in boxes)]
 
 
 def _next_level(level: Level) -> Iterator[Finding]:
@@ -57,20 +134,101 @@ def _next_level(level: Level) -> Iterator[Finding]:
                f"({error.strerror or error})", "pick the next map again in Map > Map Properties")
 
 
-def _checkpoints(level: Level) -> Iterator[Finding]:
-    world = World(level)
-    w, h = level.spawn.w, level.spawn.h
-    for flag in level.checkpoints:
-        standing = Box(flag.x + (flag.w - w) / 2, flag.bottom - h, w, h)
-        place = nearest_free_place(world.solids, standing)
+def _respawn_place(world: World, flag: Box) -> tuple[Box, Box]:
+    """Where a player coming back to ``flag`` is put, and where it would stand if free."""
+    w, h = world.level.spawn.w, world.level.spawn.h
+    standing = Box(flag.x + (flag.w - w) / 2, flag.bottom - h, w, h)
+    return nearest_free_place(world.solids, standing), standing
+
+
+def _checkpoints(level: Level, world: World, places: Sequence[Place]) -> Iterator[Finding]:
+    for flag, where in zip(level.checkpoints, places, strict=True):
+        place, standing = _respawn_place(world, flag)
         if abs(place.x - standing.x) > SAME_PLACE_PX or abs(place.y - standing.y) > SAME_PLACE_PX:
-            col = int(flag.x // level.grid.tile_w)
-            row = int(flag.y // level.grid.tile_h)
-            yield ("error", tile_place(col, row), "a player coming back to this Checkpoint "
+            yield ("error", where, "a player coming back to this Checkpoint "
                    "would stand inside Solid tiles, so the game moves it to the nearest free "
                    f"place, ({place.x:g}, {place.y:g}) instead of ({standing.x:g}, "
                    f"{standing.y:g})", "move the Checkpoint so that its bottom edge rests on "
                    "the ground with open space above it")
+
+
+def _first(shapes: list[TileShape]) -> TileShape | None:
+    return min(shapes, key=lambda s: (s.row, s.col), default=None)
+
+
+def _spiked_checkpoints(level: Level, world: World,
+                        places: Sequence[Place]) -> Iterator[Finding]:
+    """Hazard tiles inside the respawn place, or under it when nothing holds it up."""
+    grid = level.grid
+    for flag, where in zip(level.checkpoints, places, strict=True):
+        place, _ = _respawn_place(world, flag)
+        region = place if ground_under(world.solids, place) is not None else Box(
+            place.x, place.y, place.w, place.h + grid.tile_h)  # it falls onto what is below
+        spikes = _first([s for s in grid.shapes_in(region) if s.kind is TileKind.HAZARD])
+        if spikes is None:
+            continue
+        yield ("warning", Place(where, where.object_id, (spikes.col, spikes.row)),
+               f"a player coming back to this Checkpoint lands on Hazard tiles, at tile "
+               f"({spikes.col},{spikes.row}), and loses a life again when the blinking after "
+               "the last one ends", "move the Checkpoint onto ground with no spikes, or clear "
+               "the Hazard tiles under it")
+
+
+def _first_wall(spec: PlatformSpec, grid: TileGrid) -> TileShape | None:
+    """The first Solid tile shape the platform's box meets along its path, swept leg by
+    leg (from its first point, round the loop if it is a polygon), or None."""
+    w, h = spec.width_px, spec.height_px
+    legs = spec.path.legs or ((spec.path.points[0], spec.path.points[0]),)
+    for (x0, y0), (x1, y1) in legs:
+        start = Box(x0, y0, w, h)
+        region = Box(min(x0, x1), min(y0, y1), abs(x1 - x0) + w, abs(y1 - y0) + h)
+        hits = []
+        for shape in grid.shapes_in(region):
+            if shape.kind is TileKind.SOLID:
+                contact = sweep(start, x1 - x0, y1 - y0, shape.box)
+                if contact is not None:  # overlapping from the start is t = 0
+                    hits.append((contact.t, shape.row, shape.col, shape))
+        if hits:
+            return min(hits, key=lambda hit: hit[:3])[3]
+    return None
+
+
+def _walled_platforms(level: Level, places: Sequence[Place]) -> Iterator[Finding]:
+    for spec, where in zip(level.platforms, places, strict=True):
+        wall = _first_wall(spec, level.grid)
+        if wall is None:
+            continue
+        yield ("warning", Place(where, where.object_id, (wall.col, wall.row)),
+               f"this Platform's path runs into Solid tiles, first at tile ({wall.col},"
+               f"{wall.row}): the platform passes through the wall, but a player riding it "
+               "is stopped by the wall and crushed", "move the path's points (Edit Polygons "
+               "tool) so that the platform's box, hanging from the line by its top-left "
+               "corner, clears the walls, or clear the Solid tiles in its way")
+
+
+def _unreachable_coins(level: Level, world: World,
+                       places: Sequence[Place]) -> Iterator[Finding]:
+    """Coins none of whose cells the reach fill touches (the cells the middle of the feet is
+    in when the body overlaps the coin, as the fill counts an Exit's)."""
+    if not level.coins:
+        return
+    reach = reachable(world)
+    if reach is None:
+        return
+    body, grid = world.spawn, level.grid
+    for coin, where in zip(level.coins, places, strict=True):
+        left, right = coin.box.left - body.w / 2 - SLACK_PX, coin.box.right + body.w / 2 + SLACK_PX
+        top, bottom = coin.box.top - SLACK_PX, coin.box.bottom + body.h + SLACK_PX
+        first, last = _tile_of(grid, left, top), _tile_of(grid, right, bottom)
+        cells = {(col, row) for col in range(first[0], last[0] + 1)
+                 for row in range(first[1], last[1] + 1)}
+        if cells & reach.cells:
+            continue
+        yield ("warning", where, "no jump reaches this Coin: it lies outside everything the "
+               "player's jumps can touch from the spawn (and the Checkpoints), so it can never "
+               "be collected", "move the Coin down within a jump of the ground, or add a "
+               "ledge or a Platform on the way to it (the checker's summary gives the "
+               "player's reach)")
 
 
 def _object_place(node: ET.Element) -> Place:
@@ -81,15 +239,9 @@ def _object_place(node: ET.Element) -> Place:
         return Place(f"object #{node.get('id', '?')} '{node.get('name', '')}'")
 
 
-def _hidden_objects(path: Path) -> Iterator[Finding]:
-    findings = Findings(path)
-    try:
-        root = read_tiled_xml(path, "map", findings)
-        layers = walk_layers(root, findings)
-    except LevelError:
-        return
+def _hidden_objects(parts: _Map) -> Iterator[Finding]:
     known = {cls.name.lower() for cls in OBJECT_CLASSES}
-    for layer in layers:
+    for layer in parts.layers:
         if layer.kind != "objectgroup" or layer.visible:
             continue
         for node in layer.node.iter("object"):
@@ -104,4 +256,20 @@ def _hidden_objects(path: Path) -> Iterator[Finding]:
 
 def designer_findings(path: Path, level: Level) -> list[Finding]:
     """Every finding of this module for a map that loaded, in the order above."""
-    return [*_next_level(level), *_checkpoints(level), *_hidden_objects(path)]
+    world = World(level)
+    parts = _read_again(path)
+    if parts is None:
+        return [*_next_level(level)]
+    grid = level.grid
+    flags = _places(parts.of_class("checkpoint"), level.checkpoints, grid)
+    platforms = _places(parts.of_class("platform"), [Box(*s.path.points[0], s.width_px,
+                                                         s.height_px) for s in level.platforms],
+                        grid)
+    coins = _places(parts.of_class("coin"), [c.box for c in level.coins], grid)
+    layers, tilesets, header = parts.tile_layers, parts.tilesets, parts.header
+    return [*_next_level(level), *_checkpoints(level, world, flags),
+            *_spiked_checkpoints(level, world, flags), *_walled_platforms(level, platforms),
+            *_unreachable_coins(level, world, coins), *_hidden_objects(parts),
+            *tile_mistakes.turned_one_ways(layers, tilesets, header),
+            *tile_mistakes.classless_ground(path, layers, tilesets, header),
+            *tile_mistakes.colliding_quiet_layers(layers, tilesets, header)]

@@ -11,6 +11,8 @@ What it teaches:
     diagonal flip (a swap of x and y) first, then the horizontal and vertical flips, as
     :func:`flip_box` does: a spike drawn upside down hurts from the ceiling.
   * A tile larger than the grid stands on its cell's bottom-left corner, as Tiled draws it.
+  * Layers are merged cell by cell, and a shape already in a cell is not put there again:
+    ground painted on two identical layers is the same ground as on one.
 
 >>> flip_box(Box(1, 8, 14, 8), FLIPPED_V, 16, 16)   # floor spikes hung from the ceiling
 Box(x=1, y=0, w=14, h=8)
@@ -80,13 +82,30 @@ def _shapes_of(raw: int, tilesets: Tilesets, header: MapHeader) -> Offsets | Non
     return tuple(shapes)
 
 
+def _new_in_cell(placed: dict[int, Offsets], index: int, shapes: Offsets) -> Offsets:
+    """The shapes of ``shapes`` that cell ``index`` does not hold yet, noted as held: the
+    same tile painted on two layers (a copy of the ground layer, say) is one wall, not two
+    laid on each other, so nothing that adds up the cover of a cell counts it twice."""
+    before = placed.get(index)
+    if before is None:
+        placed[index] = shapes
+        return shapes
+    if before is shapes:  # the same tile again: its shapes are worked out once, by id
+        return ()
+    fresh = tuple(shape for shape in shapes if shape not in before)
+    placed[index] = before + fresh
+    return fresh
+
+
 def build_grid(header: MapHeader, layers: Sequence[tuple[LayerNode, Sequence[int]]],
                tilesets: Tilesets, findings: Findings) -> TileGrid:
     """The collision grid of all tile layers; a GID no tileset owns is an error.
 
     Every shape is counted, layer by layer, before the first one is made: a map past the
     budget is refused having made none. Counting goes by tile id, not by cell: a layer holds
-    few different ids, and each id's shapes are worked out once."""
+    few different ids, and each id's shapes are worked out once. A shape painted on several
+    layers in one cell is made once (:func:`_new_in_cell`), though the count before counts
+    it on each layer: the budget is a bound on what is made."""
     cache: dict[int, Offsets | None] = {}
     made = 0  # shapes the layers counted so far will make
     for layer, gids in layers:
@@ -115,11 +134,15 @@ def build_grid(header: MapHeader, layers: Sequence[tuple[LayerNode, Sequence[int
                            f"tilesets{more}",
                            "erase those tiles, or add back the tileset they came from")
     grid = TileGrid(header.cols, header.rows, header.tile_w, header.tile_h)
+    placed: dict[int, Offsets] = {}  # each cell's shapes so far, when several layers collide
+    several = len(layers) > 1
     for _layer, gids in layers:
         for index, raw in enumerate(gids):
             shapes = cache[raw] if raw else None
             if not shapes:  # an empty cell, a tile that does not collide, or an unknown id
                 continue
+            if several:
+                shapes = _new_in_cell(placed, index, shapes)
             row, col = divmod(index, header.cols)
             left, top = col * header.tile_w, row * header.tile_h
             for kind, (x, y, w, h) in shapes:

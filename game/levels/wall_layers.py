@@ -8,10 +8,21 @@ readers, so a Solid tile painted on a layer meant for decoration (say one named
 
 What it teaches: to blame a part, take it away and ask again: the layer whose tiles, once
 removed, would open the way is the one that closes it.
+
+A layer's name is a promise the game does not read: :func:`says_it_does_not_collide` tells
+a name that promises no collision (the words of :data:`QUIET_WORDS`: "no collision",
+"background", "backdrop", "decor", "decoration", "scenery", "bg", in any case, with
+spaces, hyphens or underscores), so the checker can warn about the colliding tiles on such
+a layer even where they close nothing.
+
+>>> [says_it_does_not_collide(name) for name in ("background (no collision)", "Decor_2",
+...                                                "ground", "backgrounds", "debug")]
+[True, True, False, False, False]
 """
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 from game.collision.shapes import TileKind
@@ -25,6 +36,16 @@ from game.levels.tiledxml import read_tiled_xml
 from game.levels.tilesets import read_tilesets
 
 Cell = tuple[int, int]
+# Words in a layer's name that say its tiles are not meant to collide, each a whole word of
+# the name once "_" and "-" are read as spaces ("no collision" also written together).
+QUIET_WORDS = ("no collision", "no collisions", "nocollision", "non colliding", "background",
+               "backdrop", "decor", "decoration", "decorations", "scenery", "bg")
+_QUIET = re.compile(r"\b(?:" + "|".join(re.escape(w) for w in QUIET_WORDS) + r")\b")
+
+
+def says_it_does_not_collide(name: str) -> bool:
+    """Does the layer's name say its tiles do not collide (one of :data:`QUIET_WORDS`)?"""
+    return _QUIET.search(re.sub(r"[\s_-]+", " ", name.lower())) is not None
 
 
 def closed_cells_by_layer(path: Path) -> list[tuple[str, set[Cell]]]:

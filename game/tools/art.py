@@ -147,7 +147,9 @@ CLOUD_SHADE: RGB = (214, 230, 250)
 
 # --------------------------------------------------------------------------
 # Tile ids (row-major in tiles.png) and their Tiled classes: maps made since the first
-# version rely on them, so an id never changes meaning and the tileset never grows
+# version rely on them, so an id never changes meaning and the tileset never grows; the
+# dark stone and dark dirt (14, 15), drawn as ground but first left without a class, are
+# Solid, as they look
 # --------------------------------------------------------------------------
 
 GROUND = 0
@@ -182,6 +184,8 @@ TILE_CLASSES: dict[int, str] = {
     ONE_WAY: "OneWay",
     SPIKES: "Hazard",
     LONE_BLOCK: "Solid",
+    BACK_WALL: "Solid",
+    BACK_DIRT_FILL: "Solid",
 }
 TILE_HITBOXES: dict[int, tuple[int, int, int, int]] = {SPIKES: SPIKE_HITBOX}
 
@@ -725,12 +729,12 @@ def draw_signpost(tile: pygame.Surface) -> None:
 
 
 def draw_back_wall(tile: pygame.Surface) -> None:
-    """Tile 14: a darker fieldstone wall for background layers (decor)."""
+    """Tile 14: a darker fieldstone wall (solid)."""
     draw_fieldstone(tile, (BACK_STONE_LIGHT, BACK_STONE, BACK_STONE_DARK), SEED + 4)
 
 
 def draw_back_dirt(tile: pygame.Surface) -> None:
-    """Tile 15: dark dirt for background layers (decor)."""
+    """Tile 15: dark dirt (solid)."""
     draw_dirt(tile, 0, SEED + 5, (BACK_DIRT_LIGHT, BACK_DIRT, BACK_DIRT_DARK), pebbles=False)
 
 

@@ -7,8 +7,15 @@
  *     python -I -m game.levels check --format json --budget 1000 -- MAP
  * (Tiled's Process API, Tiled 1.8) and turns each finding into an entry of the Issues
  * panel: errors with tiled.error, warnings and "not decided" with tiled.warn. Activating an
- * entry selects the object it names (object #ID) or the tile it names (tile (X,Y)) and
+ * entry selects the object it names (object #ID) or else the tile it names (tile (X,Y)) and
  * centres the view there.
+ *
+ * Tiled 1.8's scripts can add to the Issues panel (tiled.warn, tiled.error) but not remove
+ * from it: the tiled module has log, warn and error, and no way to clear the panel (only
+ * its Clear button does). So each check starts with a separator line in the Console, and an
+ * entry of an earlier check of the same map that this check did not find again selects
+ * nothing when activated: it says so in the Console instead (an entry found again is the
+ * same entry in Tiled's panel, which then runs the newest check's selection).
  *
  * A map may come from anyone, so nothing of its folder runs: Python starts in isolated mode
  * (-I: neither the working folder nor PYTHON* variables nor the user's site-packages reach
@@ -28,6 +35,8 @@ var SEARCH_BUDGET = 1000;  // moves the search may try: about 1 s on a shipped l
                            // 10 s of CPU on the busiest map the limits allow
 var NOT_INSTALLED = /No module named '?game\b/;  // Python's words when the game is not installed
 var SHOWN_CHARS = 2000;  // the most of a message the Issues panel is given
+var checks = 0;  // checks run since Tiled loaded this extension
+var latestCheckOf = {};  // map file -> the number of its latest check
 
 function checkerArguments(mapFile) {
     return ["-I", "-m", "game.levels", "check", "--format", "json",
@@ -82,21 +91,31 @@ function centreOn(map, x, y) {
         view.centerOn(x, y);
 }
 
-function selector(map, finding) {
+function selectTile(map, tile) {
+    var x = tile[0], y = tile[1];
+    if (map.selectedArea && typeof map.selectedArea.set === "function")
+        map.selectedArea.set(Qt.rect(x, y, 1, 1));
+    centreOn(map, (x + 0.5) * map.tileWidth, (y + 0.5) * map.tileHeight);
+}
+
+function selector(map, finding, check) {
+    var mapFile = map.fileName;
     return function () {
+        if (latestCheckOf[mapFile] !== check) {
+            tiled.log(shown("Tile Hopper: this finding is from an earlier check of " + mapFile +
+                            " and the latest check did not find it again; press Clear in " +
+                            "the Issues panel to remove the findings of earlier checks"));
+            return;
+        }
         if (tiled.activeAsset !== map)
             tiled.activeAsset = map;
-        if (finding.object_id !== null) {
-            var object = findObject(map.layers, finding.object_id);
-            if (object) {
-                map.selectedObjects = [object];
-                centreOn(map, object.x + object.width / 2, object.y + object.height / 2);
-            }
-        } else if (finding.tile !== null) {
-            var x = finding.tile[0], y = finding.tile[1];
-            if (map.selectedArea && typeof map.selectedArea.set === "function")
-                map.selectedArea.set(Qt.rect(x, y, 1, 1));
-            centreOn(map, (x + 0.5) * map.tileWidth, (y + 0.5) * map.tileHeight);
+        var object = typeof finding.object_id === "number"
+            ? findObject(map.layers, finding.object_id) : null;
+        if (object) {
+            map.selectedObjects = [object];
+            centreOn(map, object.x + object.width / 2, object.y + object.height / 2);
+        } else if (Array.isArray(finding.tile)) {
+            selectTile(map, finding.tile);
         }
     };
 }
@@ -131,6 +150,11 @@ var checkAction = tiled.registerAction("TileHopperCheck", function () {
     if (map.modified)
         tiled.trigger("Save");
     var mapFile = map.fileName;
+    checks += 1;
+    latestCheckOf[mapFile] = checks;
+    tiled.log(shown("==== Tile Hopper check " + checks + ": " + mapFile + " ==== (the " +
+                    "Issues panel keeps the findings of earlier checks until you press its " +
+                    "Clear button)"));
     tiled.log(shown("Checking " + mapFile + " (reading it, then searching for a route " +
                     "of at most " + SEARCH_BUDGET + " moves)..."));
     var result = runCheck(mapFile);
@@ -156,9 +180,9 @@ var checkAction = tiled.registerAction("TileHopperCheck", function () {
         checked.findings.forEach(function (finding) {
             var text = shown(finding.text);
             if (finding.severity === "error")
-                tiled.error(text, selector(map, finding));
+                tiled.error(text, selector(map, finding, checks));
             else
-                tiled.warn(text, selector(map, finding));
+                tiled.warn(text, selector(map, finding, checks));
         });
     });
     tiled.log(shown(report.summary));
