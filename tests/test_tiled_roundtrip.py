@@ -108,12 +108,8 @@ def test_levels_resaved_by_tiled_pass_the_checker(variant: str,
     maps = sorted(resaved[variant].glob("*.tmx"))
     result = call_main(levels_main, ["check", "--no-solve", "--jobs", "1", *maps])
     assert result.returncode == 0, result.stdout
-    *found, summary = result.stdout.splitlines()
-    assert summary.startswith(f"checked {len(maps)} map(s): all playable;"), result.stdout
-    # only what the checker says of the originals: no jump reaches two Coins of First Steps
-    assert [line.split(": warning: ")[0] for line in found] == [
-        f"{resaved[variant] / FIRST_LEVEL.name}: object #{number} ''" for number in (1, 2)]
-    assert all("no jump reaches this Coin" in line for line in found)
+    assert result.stdout.startswith(f"checked {len(maps)} map(s): all playable;"), result.stdout
+    assert len(result.stdout.splitlines()) == 1, result.stdout
 
 
 @pytest.mark.parametrize("variant", sorted(VARIANTS))
