@@ -266,10 +266,15 @@ class OwnReach:
 def own_reaches(own: Sequence[tuple[Path, Tuning]]) -> tuple[list[OwnReach], int]:
     """The reach on the first :data:`MAX_OWN_PHYSICS` maps of ``own``, with their limits
     measured within :data:`SUMMARY_MEASURE_TICKS` ticks of play in all (maps with the same
-    physics share one measurement), and how many maps are left out."""
-    meter = _Meter(SUMMARY_MEASURE_TICKS)
-    shown = [OwnReach(path, measure_reach(tuning), _limits_within(tuning, meter))
-             for path, tuning in own[:MAX_OWN_PHYSICS]]
+    physics share one measurement), and how many maps are left out. Each map may spend an
+    even share of the ticks left, so a costly one does not leave the others none."""
+    shown: list[OwnReach] = []
+    left = SUMMARY_MEASURE_TICKS
+    first = own[:MAX_OWN_PHYSICS]
+    for number, (path, tuning) in enumerate(first):
+        meter = _Meter(left // (len(first) - number))
+        shown.append(OwnReach(path, measure_reach(tuning), _limits_within(tuning, meter)))
+        left -= min(meter.ticks, meter.budget or 0)
     return shown, len(own) - len(shown)
 
 
