@@ -38,9 +38,10 @@ MAX_SPEED_PX_S = 1_000_000.0  # an enemy's or a platform's speed: past this a ti
 # The physics a map may set (Level properties), each within a range that keeps the game
 # playable and every measurement of a map (the reach, the fill of reachable.py, the search)
 # bounded. At the edges a full jump stays in the air at most about 30 s (jump_speed 1,000
-# against gravity 200, falling back at 100 px/s), rises at most 2,500 px, and a tick moves
-# the player at most 167 px. Gravity or a fall speed of 0 would never bring a jump down.
-GRAVITY_PX_S2 = (200.0, 1_000_000.0)  # 2/9 of the default up to a fall of 8 tiles a tick
+# against gravity 200, falling back at 100 px/s), rises at most 2,500 px, and the player's
+# own speeds move it at most 167 px a tick. Gravity or a fall speed of 0 would never bring
+# a jump down. (levels/README.md lists them; a test keeps the two the same.)
+GRAVITY_PX_S2 = (200.0, 1_000_000.0)  # 2/9 of the default up to any fall speed in one tick
 MAX_FALL_SPEED_PX_S = (100.0, 10_000.0)  # a slow drift down to 10 tiles of 16 px a tick
 RUN_SPEED_PX_S = (10.0, 10_000.0)  # a tile in 1.6 s up to 10 tiles of 16 px a tick
 JUMP_SPEED_PX_S = (0.0, 1_000.0)  # no jump at all up to 3.4 times the default
