@@ -24,7 +24,8 @@ there is no route to write: the map is bad, impossible or not decided (the line 
 and how far the search got), 2 for bad usage.
 
 ``reach`` prints the player's reach with the default physics (or a map's own, given one),
-measured in the game's own tick: the highest ledge and the widest gaps.
+measured in the game's own tick: the highest ledge and the widest gaps (within a budget of
+ticks of play: :data:`game.levels.reach.MAX_MEASURE_TICKS`).
 
 ``types`` says whether the generated Tiled files in ``levels/`` match
 :mod:`game.levels.classes` (exit 1 if not); ``types --write`` regenerates them.
@@ -54,7 +55,7 @@ from game.levels.closed_output import flush_both, say, tell
 from game.levels.errors import LevelError, escaped
 from game.levels.loader import files_read, load_level
 from game.levels.outputs import image_suffix, unwritable, write_output, write_surface
-from game.levels.reach import limits_of, measure_limits, measure_reach
+from game.levels.reach import limits_of, measure_reach, own_reaches
 from game.levels.reading import reason
 from game.levels.route_picture import draw_route
 from game.levels.shipped import LEVELS_DIR
@@ -125,9 +126,12 @@ def reach_summary(own: list[tuple[Path, Tuning]]) -> str:
     default = Tuning()
     text = ("with the default physics the player " if own else "the player ") + \
         measure_reach(default).describe(TILE_PX) + "; " + limits_of(default).describe()
-    for path, tuning in own:
-        text += (f"; on {path.name}, with its own physics, it "
-                 f"{measure_reach(tuning).describe(TILE_PX)}; {limits_of(tuning).describe()}")
+    shown, more = own_reaches(own)
+    for item in shown:
+        text += (f"; on {item.path.name}, with its own physics, it "
+                 f"{item.reach.describe(TILE_PX)}; {item.limits.describe()}")
+    if more:
+        text += f"; {more:,} more map(s) set their own physics (reach MAP measures one)"
     return text
 
 
@@ -244,7 +248,7 @@ def reach_command(path: Path | None) -> int:
         except LevelError as error:
             tell(str(error))
             return EXIT_BAD
-    limits = limits_of(tuning) if path is None else measure_limits(tuning)
+    limits = limits_of(tuning)
     say(f"the player {measure_reach(tuning).describe(TILE_PX)}; {limits.describe()}")
     return EXIT_OK
 

@@ -34,7 +34,17 @@ MemberType = Literal["int", "float", "string", "bool", "file"]
 UseAs = Literal["object", "tile", "map"]
 Plain = int | float | str | bool
 
-MAX_SPEED_PX_S = 1_000_000.0  # also px/s² for gravity: past this a tick is a teleport
+MAX_SPEED_PX_S = 1_000_000.0  # an enemy's or a platform's speed: past this a tick is a teleport
+# The physics a map may set (Level properties), each within a range that keeps the game
+# playable and every measurement of a map (the reach, the fill of reachable.py, the search)
+# bounded. At the edges a full jump stays in the air at most about 30 s (jump_speed 1,000
+# against gravity 200, falling back at 100 px/s), rises at most 2,500 px, and the player's
+# own speeds move it at most 167 px a tick. Gravity or a fall speed of 0 would never bring
+# a jump down. (levels/README.md lists them; a test keeps the two the same.)
+GRAVITY_PX_S2 = (200.0, 1_000_000.0)  # 2/9 of the default up to any fall speed in one tick
+MAX_FALL_SPEED_PX_S = (100.0, 10_000.0)  # a slow drift down to 10 tiles of 16 px a tick
+RUN_SPEED_PX_S = (10.0, 10_000.0)  # a tile in 1.6 s up to 10 tiles of 16 px a tick
+JUMP_SPEED_PX_S = (0.0, 1_000.0)  # no jump at all up to 3.4 times the default
 MAX_COIN_VALUE = 1_000_000
 # The places a level can be set in (the map property ``setting``); game.app.places draws them.
 SETTINGS = ("meadow", "cliffs", "forest", "caves", "dusk", "summit")
@@ -44,7 +54,10 @@ WHAT_TYPE = {"int": "a whole number", "float": "a number", "string": "text",
 
 
 def _plain(number: float) -> str:
-    return f"{int(number):,}" if number == int(number) else f"{number:g}"
+    """A number as a designer types it: ``1,000,000``, ``0``, ``2.5``, ``1e+300``."""
+    if number == int(number) and abs(number) < 1e15:
+        return f"{int(number):,}"
+    return f"{number:g}"
 
 
 @dataclass(frozen=True)
@@ -97,7 +110,7 @@ class Member:
             raise ValueError(f"{value!r} is not a whole number")
         if (self.low is not None and number < self.low) or (
                 self.high is not None and number > self.high):
-            raise ValueError(f"{value!r} is not {self.expected}")
+            raise ValueError(f"{_plain(number)} is not {self.expected}")
         return int(number) if self.type == "int" else float(number)
 
 
@@ -118,8 +131,9 @@ class TiledClass:
         return next(m for m in self.members if m.name == name)
 
 
-def speed(name: str, default: float, doc: str) -> Member:
-    return Member(name, "float", default, doc, 0.0, MAX_SPEED_PX_S)
+def speed(name: str, default: float, doc: str,
+          bounds: tuple[float, float] = (0.0, MAX_SPEED_PX_S)) -> Member:
+    return Member(name, "float", default, doc, *bounds)
 
 
 def classes_for(tuning: Tuning) -> tuple[TiledClass, ...]:
@@ -163,12 +177,14 @@ def classes_for(tuning: Tuning) -> tuple[TiledClass, ...]:
                     Member("setting", "string", DEFAULT_SETTING,
                            "where the level is set: its sky, scenery and ground",
                            choices=SETTINGS),
-                    speed("gravity", tuning.gravity_px_s2, "downward pull in px/s²"),
+                    speed("gravity", tuning.gravity_px_s2, "downward pull in px/s²",
+                          GRAVITY_PX_S2),
                     speed("max_fall_speed", tuning.max_fall_speed_px_s,
-                          "fastest fall in px/s"),
-                    speed("run_speed", tuning.run_speed_px_s, "top running speed in px/s"),
+                          "fastest fall in px/s", MAX_FALL_SPEED_PX_S),
+                    speed("run_speed", tuning.run_speed_px_s, "top running speed in px/s",
+                          RUN_SPEED_PX_S),
                     speed("jump_speed", tuning.jump_speed_px_s,
-                          "upward speed of a jump in px/s"))),
+                          "upward speed of a jump in px/s", JUMP_SPEED_PX_S))),
     )
 
 

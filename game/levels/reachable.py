@@ -31,6 +31,11 @@ Each rule only ever lets the point go further than the game would, so if an Exit
 are never reached, the map cannot be won. The converse does not hold: a reached Exit proves
 nothing, which is what the search is for.
 
+The fill's work is counted, never timed: each cell a jump or a fall looks at, and each point
+of a moving platform's path, counts one step, and after :data:`MAX_FILL_STEPS` the fill gives
+up and proves nothing (:func:`reachable` gives None, as for physics with no bound): on the
+biggest map the game reads, with floors everywhere, the fill would otherwise take minutes.
+
 Two questions, from cheap to sharp: :func:`open_path` (is there any open way at all, gravity
 ignored?) and :func:`reachable` (is the Exit inside the jump envelope's fill?).
 """
@@ -55,7 +60,25 @@ Cell = tuple[int, int]
 SLACK_PX = 0.5  # rounding room on every bound
 FALL_DEPTH_PX = 24.0  # below the launch by this much, the fill switches to falling
 MAX_AIR_TICKS = 10_000
+MAX_FILL_STEPS = 3_000_000  # cells looked at (and path points walked) by one jump fill
 RIDE_ROW = -(10**9)  # steps_to_exit's nodes for a platform ride sit in this row
+
+
+class FillTooBig(Exception):
+    """The jump fill would take more than :data:`MAX_FILL_STEPS` steps."""
+
+
+@dataclass
+class FillWork:
+    """The steps a jump fill has taken, against its budget."""
+
+    budget: int = field(default_factory=lambda: MAX_FILL_STEPS)
+    steps: int = 0
+
+    def spend(self, steps: int) -> None:
+        self.steps += steps
+        if self.steps > self.budget:
+            raise FillTooBig(f"more than {self.budget:,} steps")
 
 
 def jump_rise(tuning: Tuning) -> list[float]:
@@ -289,9 +312,10 @@ def open_path(world: World, opened: frozenset[Cell] = frozenset()) -> Reach:
 class _JumpFill(_Fill):
     """The jump envelope's fill: launches, arcs within the envelope, and falls."""
 
-    def __init__(self, level: Level, envelope: Envelope, body: Box) -> None:
+    def __init__(self, level: Level, envelope: Envelope, body: Box, work: FillWork) -> None:
         grid = level.grid
-        launches = self._launch_heights(level, body)
+        self.work = work
+        launches = self._launch_heights(level, body, work)
         top = min([row for _, row in launches] + [0])
         rise_rows = math.ceil(max(envelope.rise_by_tick) + envelope.extra_rise_px) // max(
             1, grid.tile_h) + 2
@@ -302,10 +326,10 @@ class _JumpFill(_Fill):
         self.moves: dict[Cell, set[Cell]] = {}  # every step from cell to cell the fill made
         self.falling: set[tuple[int, int, bool]] = set()
         self.fall_queue: deque[tuple[int, int, bool]] = deque()
-        self.platform_cells = self._platform_groups(level, body)
+        self.platform_cells = self._platform_groups(level, body, work)
 
     @staticmethod
-    def _launch_heights(level: Level, body: Box) -> dict[Cell, float]:
+    def _launch_heights(level: Level, body: Box, work: FillWork) -> dict[Cell, float]:
         grid = level.grid
         heights: dict[Cell, float] = {}
 
@@ -313,6 +337,7 @@ class _JumpFill(_Fill):
             row = math.floor((top - SLACK_PX) / grid.tile_h)
             first = math.floor((left - body.w / 2) / grid.tile_w)
             last = math.floor((right + body.w / 2) / grid.tile_w)
+            work.spend(max(1, last - first + 1))
             for col in range(first, last + 1):
                 if heights.get((col, row), math.inf) > top:
                     heights[(col, row)] = top
@@ -331,13 +356,14 @@ class _JumpFill(_Fill):
         return heights
 
     @staticmethod
-    def _platform_groups(level: Level, body: Box) -> list[set[Cell]]:
+    def _platform_groups(level: Level, body: Box, work: FillWork) -> list[set[Cell]]:
         """For each platform, every cell its riders' feet can be carried through."""
         grid = level.grid
         groups: list[set[Cell]] = []
         for spec in level.platforms:
             cells: set[Cell] = set()
             for x, y in _along(spec.path.legs, spec.path.points, min(grid.tile_w, grid.tile_h) / 4):
+                work.spend(1 + math.ceil((spec.width_px + body.w) / grid.tile_w))
                 row = math.floor((y - SLACK_PX) / grid.tile_h)
                 for col in range(math.floor((x - body.w / 2) / grid.tile_w),
                                  math.floor((x + spec.width_px + body.w / 2) / grid.tile_w) + 1):
@@ -358,6 +384,7 @@ class _JumpFill(_Fill):
 
     def _reach_cell(self, cell: Cell) -> None:
         if cell not in self.seen:
+            self.work.spend(1 + len(self.platform_cells))
             self.seen.add(cell)
             if cell in self.launch_y:
                 self.queue.append(cell)
@@ -390,6 +417,7 @@ class _JumpFill(_Fill):
         queue: deque[Cell] = deque([start])
         while queue:
             col, row = queue.popleft()
+            self.work.spend(8)
             for dc in (-1, 0, 1):
                 for dr in (-1, 0, 1):
                     near = (col + dc, row + dr)
@@ -421,24 +449,27 @@ class _JumpFill(_Fill):
             self.fall_queue.append(state)
 
     def _fall_step(self, state: tuple[int, int, bool]) -> None:
-        """Falling: one row down to any of three cells, or one sideways step per row."""
+        """Falling: one row down to any of three cells, or one sideways step per row (a
+        step wider than one cell must pass the open cells between)."""
         col, row, stepped = state
         self._reach_cell((col, row))
-        sideways = self.envelope.sideways_cells_per_row
-        moves: list[tuple[int, int, bool]] = [(col + dc, row + 1, False)
-                                              for dc in range(-sideways, sideways + 1)]
-        if not stepped:
-            moves += [(col + dc, row, True) for dc in range(-sideways, sideways + 1) if dc]
-        for near in moves:
-            if not self.open((near[0], near[1])):
-                continue
-            if abs(near[0] - col) > 1:  # a wider step must pass the cells between
-                between = range(min(col, near[0]) + 1, max(col, near[0]))
-                if any(not self.open((c, near[1])) for c in between):
-                    continue
-            self.moves.setdefault((col, row), set()).add((near[0], near[1]))
-            if near in self.falling:
-                continue
+        sideways = min(self.envelope.sideways_cells_per_row, self.grid.cols)
+        rows = [(row + 1, False)] + ([] if stepped else [(row, True)])
+        for near_row, sideways_step in rows:
+            if not sideways_step and self.open((col, near_row)):
+                self._fall_to((col, row), (col, near_row, False))
+            for direction in (-1, 1):
+                for dc in range(1, sideways + 1):
+                    self.work.spend(1)
+                    near = (col + direction * dc, near_row, sideways_step)
+                    if not self.open((near[0], near[1])):
+                        break  # no wider step passes a closed cell
+                    self._fall_to((col, row), near)
+
+    def _fall_to(self, cell: Cell, near: tuple[int, int, bool]) -> None:
+        """One move of a fall from ``cell`` to the open place ``near``."""
+        self.moves.setdefault(cell, set()).add((near[0], near[1]))
+        if near not in self.falling:
             self.falling.add(near)
             self.fall_queue.append(near)
 
@@ -486,15 +517,20 @@ def _steps_back(fill: _JumpFill, reach: Reach) -> dict[Cell, int]:
     return steps
 
 
-def reachable(world: World) -> Reach | None:
+def reachable(world: World, work: FillWork | None = None) -> Reach | None:
     """The jump envelope's fill from the spawn (and each checkpoint's respawn once met), for
     the world's level and tuning, with the steps back to an Exit from each cell it reached
     (:func:`steps_to_exit`); None when the tuning gives no bound (a jump that never comes
-    down)."""
+    down) or the fill would take more than its budget of steps (``work``, by default
+    :data:`MAX_FILL_STEPS`; it counts the steps taken)."""
     envelope = envelope_of(world.level, world.tuning)
     if envelope is None:
         return None
-    fill = _JumpFill(world.level, envelope, world.spawn)
-    reach = _flood(world, fill)
-    reach.steps = _steps_back(fill, reach)
+    work = work if work is not None else FillWork()
+    try:
+        fill = _JumpFill(world.level, envelope, world.spawn, work)
+        reach = _flood(world, fill)
+        reach.steps = _steps_back(fill, reach)
+    except FillTooBig:
+        return None
     return reach

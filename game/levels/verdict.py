@@ -106,7 +106,9 @@ def judge(level: Level, effort: Effort, command: str = "python -m game.levels") 
     impossible, reach = prove_impossible(level)
     if impossible is not None:
         return impossible
-    solution = solve(level, effort, reach.steps if reach is not None else None)
+    # No reach (physics with no bound, or a fill past its budget of steps): the search is
+    # guided by open cells alone, and does not try the fill again.
+    solution = solve(level, effort, reach.steps if reach is not None else {})
     if solution.found:
         return Verdict(Kind.SOLVED, None, f"solved: a route reaches an Exit at tick "
                        f"{solution.exit_tick}", "", solution)

@@ -2,7 +2,8 @@
 
 Where it sits: read by the entities when they choose velocities. A level can override the
 four map properties of the contract (``gravity``, ``max_fall_speed``, ``run_speed``,
-``jump_speed``); :meth:`Tuning.with_map_properties` applies them exactly as given.
+``jump_speed``); :meth:`Tuning.with_map_properties` applies them exactly as given (the
+level loader has kept them within the ranges of ``game/levels/classes.py``).
 
 What it teaches: speeds are in pixels per *second* and the tick length is explicit, so the
 game runs the same whatever the frame rate; derived values (pixels per tick) are computed,
