@@ -12,11 +12,9 @@ import io
 import os
 import re
 import shutil
-import signal
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
-from types import FrameType
 from typing import Any
 
 import pygame
@@ -25,6 +23,7 @@ import pytest
 from game.levels import LEVELS_DIR, load_level
 from game.tools import art, terrain
 from tests.collision_grids import all_grids, collision_grid, shipped_maps
+from tests.hang_guard import hang_guard
 
 ASSETS = LEVELS_DIR.parent / "assets"
 RECORDED = Path(__file__).resolve().parent / "data" / "collision-grids.txt"
@@ -229,20 +228,10 @@ def interrupted_writes(error: BaseException) -> Iterator[list[Path]]:
         yield opened
 
 
-@contextlib.contextmanager
-def no_endless_wait(seconds: float = 60.0) -> Iterator[None]:
+def no_endless_wait(seconds: float = 60.0) -> contextlib.AbstractContextManager[None]:
     """Turn a wait on a pipe nobody writes to into a failure instead of a hung test run
     (the limit is a guard, not a measure: the tool must not open the pipe to wait at all)."""
-    def stop(signum: int, frame: FrameType | None) -> None:
-        raise TimeoutError("the terrain tool waited on a pipe")
-
-    previous = signal.signal(signal.SIGALRM, stop)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
+    return hang_guard(seconds)
 
 
 @pytest.mark.parametrize("leads_to", ["outside the folder", "inside the folder"])

@@ -45,7 +45,7 @@ import math
 import os
 import signal
 import sys
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pygame
@@ -304,28 +304,22 @@ def main(argv: list[str] | None = None) -> int:
         flush_both()  # an output closed or full ends the command quietly, with its status
 
 
-def _budget(text: str) -> int:
-    """A positive whole number of moves, for argparse."""
-    try:
-        value = read_whole(text, MAX_COUNT_DIGITS)
-    except NumberTextError:
-        value = 0
-    if value <= 0:
-        raise argparse.ArgumentTypeError(f"{quoted(text)} is not a positive whole number of "
-                                         "moves")
-    return value
+def _positive(unit: str) -> Callable[[str], int]:
+    """An argparse ``type`` for a positive whole number of ``unit``."""
+    def parse(text: str) -> int:
+        try:
+            value = read_whole(text, MAX_COUNT_DIGITS)
+        except NumberTextError:
+            value = 0
+        if value <= 0:
+            raise argparse.ArgumentTypeError(f"{quoted(text)} is not a positive whole number "
+                                             f"of {unit}")
+        return value
+    return parse
 
 
-def _jobs(text: str) -> int:
-    """A positive whole number of maps at once, for argparse."""
-    try:
-        value = read_whole(text, MAX_COUNT_DIGITS)
-    except NumberTextError:
-        value = 0
-    if value <= 0:
-        raise argparse.ArgumentTypeError(f"{quoted(text)} is not a positive whole number of "
-                                         "maps")
-    return value
+_budget = _positive("moves")
+_jobs = _positive("maps")
 
 
 def _add_search_options(parser: argparse.ArgumentParser, seconds_flags: list[str]) -> None:
