@@ -10,14 +10,16 @@ a reload of the map that keeps the player where it stood
 (:meth:`~game.sim.campaign.Campaign.reload`, for ``--watch``).
 
 What it teaches: the forgiving rules that make a platformer feel good, each a tunable in
-:class:`game.sim.tuning.Tuning` and a test in ``tests/test_feel.py``:
+:class:`game.sim.tuning.Tuning` (the drop's length is :data:`DROP_THROUGH_TICKS`, below) and
+a test in ``tests/test_feel.py``, with its number pinned at its edge in ``tests/test_edges.py``:
 
 * **Acceleration and friction**: the run speed approaches its target at a rate derived from
   a time to full speed (quicker on the ground than in the air).
 * **Variable jump height**: letting go of jump while rising cuts the upward speed.
 * **Coyote time**: a jump pressed a few ticks after running off a ledge still happens.
 * **Jump buffering**: a jump pressed a few ticks before landing happens on landing.
-* **Drop through**: down + jump on a one-way platform falls through it.
+* **Drop through**: down + jump on a one-way platform falls through it (not where the feet
+  are partly on a Solid at the same height: that is an ordinary jump).
 """
 
 from __future__ import annotations
