@@ -1,7 +1,8 @@
 """Every number the README promises about feel and collision, tested just inside and just
 outside its edge: coyote time and the jump buffer (6 ticks, not 7), the ceiling corner slide
 (4 px, not 4.5), strict overlap in the tile grid's query as in ``Box``, one-way tops, the drop
-through, the stomp and its bounce, variable jump height and flush stops.
+through, the stomp and its bounce, variable jump height, flush stops, the run's speed-up and
+stop times on the ground and in the air, and terminal velocity.
 
 A test of the middle of a rule (5 ticks of coyote time) passes whether the rule stops at 6 or
 at 60; these pin where each rule stops, so a change of the number fails a test.
@@ -636,3 +637,47 @@ def test_feet_half_a_pixel_below_the_enemys_head_hurt_the_player() -> None:
     world = enemy_and_player(0.5)
     kinds = [e.kind for e in world.step(NOTHING)]
     assert EventKind.HURT in kinds and EventKind.STOMP not in kinds
+
+
+# --- Run and air speed-up and stop times, and terminal velocity: the promised numbers ------
+# Full run speed is 90 px/s. On the ground a run takes 0.05 s (3 ticks) to reach it and as
+# long to stop; in the air 0.10 s (6 ticks) to reach it and 0.20 s (12 ticks) to stop. A fall
+# gains 15 px/s a tick (900 px/s²) and never goes faster than 360 px/s, reached on tick 24.
+
+def run_speeds(air: bool, speed_up_ticks: int, stop_ticks: int) -> tuple[list[float], list[float]]:
+    """Hold right for ``speed_up_ticks`` from standing (on the floor, or falling from rest
+    in open air), then let go for ``stop_ticks``: the run speed after each tick of each."""
+    world = (World(level_from_ascii(["  P  "] + ["     "] * 60)) if air
+             else settled(["     ", "  P  ", "#####"]))
+    speeding_up = []
+    for _ in range(speed_up_ticks):
+        world.step(RIGHT)
+        speeding_up.append(world.player.vx)
+    stopping = []
+    for _ in range(stop_ticks):
+        world.step(NOTHING)
+        stopping.append(world.player.vx)
+    assert world.player.on_ground is not air
+    return speeding_up, stopping
+
+
+def test_on_the_ground_a_run_reaches_90_px_s_on_its_3rd_tick_and_stops_on_the_3rd() -> None:
+    speeding_up, stopping = run_speeds(air=False, speed_up_ticks=4, stop_ticks=4)
+    assert speeding_up == pytest.approx([30.0, 60.0, 90.0, 90.0], abs=1e-9)
+    assert stopping == pytest.approx([60.0, 30.0, 0.0, 0.0], abs=1e-9)
+
+
+def test_in_the_air_a_run_reaches_90_px_s_on_its_6th_tick_and_stops_on_the_12th() -> None:
+    speeding_up, stopping = run_speeds(air=True, speed_up_ticks=7, stop_ticks=13)
+    assert speeding_up == pytest.approx([15.0, 30.0, 45.0, 60.0, 75.0, 90.0, 90.0], abs=1e-9)
+    assert stopping == pytest.approx([90.0 - 7.5 * k for k in range(1, 13)] + [0.0], abs=1e-9)
+
+
+def test_a_fall_reaches_360_px_s_on_its_24th_tick_and_never_goes_faster() -> None:
+    world = World(level_from_ascii(["P"] + [" "] * 80))
+    speeds = []
+    for _ in range(40):
+        world.step(NOTHING)
+        speeds.append(world.player.vy)
+    assert speeds[22:25] == pytest.approx([345.0, 360.0, 360.0], abs=1e-9)
+    assert max(speeds) == 360.0

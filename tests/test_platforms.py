@@ -7,7 +7,7 @@ from dataclasses import replace
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from game.collision.aabb import Box
@@ -242,3 +242,45 @@ def test_a_few_platforms_are_found_by_their_routes_as_the_cells_would_find_them(
         assert index.near([box]) == near_by_routes
         walked = [LevelSolids(world.grid, index, s.without) for s in solids]
         assert [source.entries_in(x, y, x + w, y + h) for source in walked] == found_by_routes
+
+
+FLOOR_Y = 144.0  # the top of the floor of :func:`wall_sliding_along_the_floor`
+
+
+def wall_sliding_along_the_floor(length: float, speed: float, start: float, gap: float,
+                                 leftwards: bool) -> World:
+    """A wall (a platform 16 px wide, 64 tall) standing on a flat floor with a route of
+    ``length`` px starting at x = ``start`` (rightwards) or ending there (leftwards), and a
+    player standing on the floor ``gap`` px ahead of it, with room to be pushed all the way."""
+    cols = math.ceil((start + length + 16 + 12 + 16) / 16) + 1
+    level = level_from_ascii([" " * cols] * 9 + ["#" * cols],
+                             spawn=Box(0, FLOOR_Y - 14, 12, 14))
+    near, end = (start, start + length) if not leftwards else (start + length, start)
+    spec = PlatformSpec(Route(((near, FLOOR_Y - 64), (end, FLOOR_Y - 64))), 16, 64, speed)
+    world = World(replace(level, platforms=(spec,)))
+    x = near + 16 + gap if not leftwards else near - gap - 12
+    world.player.teleport(Box(x, FLOOR_Y - 14, 12, 14))
+    return world
+
+
+@given(length=st.floats(16, 600), speed=st.floats(30, 240), start=st.floats(12, 100),
+       ahead=st.floats(0, 0.9), leftwards=st.booleans())
+@example(length=360.0, speed=30.0, start=0.0, ahead=24 / 360, leftwards=False)
+@example(length=360.0, speed=120.0, start=0.0, ahead=24 / 360, leftwards=False)
+@example(length=300.0, speed=75.0, start=16.0, ahead=0.0, leftwards=True)
+@settings(max_examples=40, deadline=None)
+def test_a_wall_pushing_a_standing_player_with_room_along_the_floor_never_crushes_him(
+        length: float, speed: float, start: float, ahead: float, leftwards: bool) -> None:
+    """The player starts ``ahead`` of the way along the route in front of the wall."""
+    world = wall_sliding_along_the_floor(length, speed, start, ahead * length, leftwards)
+    wall = next(iter(world.platforms))
+    for _ in range(math.floor(length / speed * 60)):   # one trip, not yet turning back
+        events = world.step(NOTHING)
+        assert not world.player.crushed
+        assert not any(event.kind is EventKind.HURT for event in events)
+        assert not world.player.box.overlaps(wall.box)
+    player = world.player.box
+    if wall.travelled_px > ahead * length:   # pushed: flush against the wall's face
+        assert (player.left == wall.box.right if not leftwards
+                else player.right <= wall.box.left < player.right + 1e-9)
+    assert player.bottom == FLOOR_Y and world.player.on_ground

@@ -180,8 +180,10 @@ def move_y(solids: ShapeSource, box: Box, dy: float, *, through_one_way: bool = 
     """Move ``box`` by ``dy`` along y (down is positive), stopping flush at the nearest face.
 
     Going down, solid tops and one-way tops that start at or below the feet stop the body
-    (one-way tops are skipped when ``through_one_way`` is set, to drop through them).
-    Going up, only solid bottoms do. The map has no floor and no ceiling of its own.
+    (one-way tops are skipped when ``through_one_way`` is set, to drop through them); where
+    tops meet at the height it stops at, the hit names a Solid before a OneWay, else the
+    first the query found. Going up, only solid bottoms do. The map has no floor and no
+    ceiling of its own.
     """
     if not -INF < dy < INF:
         _refuse(dy)
@@ -196,6 +198,8 @@ def move_y(solids: ShapeSource, box: Box, dy: float, *, through_one_way: bool = 
             if ((kind is SOLID or (kind is ONE_WAY and not through_one_way))
                     and bottom <= s_top < stop):
                 stop, found = s_top, shape
+            elif kind is SOLID and s_top == stop and found is not None and found.kind is ONE_WAY:
+                found = shape  # a tie: a Solid top at the same height is the floor reported
         hit = None if found is None else _new(Hit, (BOTTOM, stop, found))
         return Move(_new(Box, (x, stop - h, w, h)), hit, box, 0.0, dy)
     stop = y + dy  # rising: the nearest solid bottom at or above the head
@@ -246,11 +250,16 @@ def slide_past_ceiling_corner(solids: ShapeSource, box: Box, dy: float,
 
 def ground_under(solids: ShapeSource, box: Box, *, through_one_way: bool = False,
                  ) -> TileShape | None:
-    """The solid or one-way shape whose top lies exactly at the feet, if any (the probe)."""
+    """The solid or one-way shape whose top lies exactly at the feet, if any (the probe);
+    a Solid before a OneWay, so feet partly on a Solid stand on it."""
     x, y, w, h = box
     feet = y + h
+    one_way: TileShape | None = None
     for _, s_top, _, _, kind, shape in solids.entries_in(x, feet, x + w, feet + GROUND_PROBE_PX):
         if s_top != feet or kind is HAZARD or (kind is ONE_WAY and through_one_way):
             continue
-        return shape
-    return None
+        if kind is SOLID:
+            return shape
+        if one_way is None:
+            one_way = shape
+    return one_way

@@ -1,8 +1,10 @@
 """A moving body: a sprite with a velocity, whose exact position is a float box.
 
 Where it sits: the base of :class:`game.sim.player.Player` and :class:`game.sim.enemy.Enemy`;
-itself a :class:`~game.sim.sprite.BoxSprite`. Only the movement code changes ``box`` (through
-:meth:`BoxSprite.place`; the drawn ``rect`` is derived from the box whenever it is read).
+itself a :class:`~game.sim.sprite.BoxSprite`. Its ``box`` changes only through
+:meth:`BoxSprite.place`: by the tick's moves, a platform's push or carry, and
+:meth:`Body.teleport` for a respawn or a reload (the five places are listed in
+:mod:`game.sim.player`); the drawn ``rect`` is derived from the box whenever it is read.
 
 What it teaches: pygame 2.6 Rects hold integers, so ``rect.x += 0.4`` never moves anything.
 The true position is the float :class:`~game.collision.aabb.Box`. A tick's two axis moves

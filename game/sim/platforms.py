@@ -4,7 +4,9 @@ Where it sits: step 2 of a tick, before the bodies' own moves (:meth:`World.step
 platform advances along its path, one axis at a time, and does two things to bodies:
 
 * a body in its way is **pushed** to the platform's leading face, through the same swept
-  move as any other step, so a wall stops it; if the wall leaves it no room, it is crushed;
+  move as any other step, so a wall stops it; if the wall leaves it no room, it is crushed
+  (:func:`push`: a body with room ends exactly flush against the face, so no rounding in
+  the move can leave it a hair inside the platform and cost a life);
 * a body **riding** it (its feet found the platform with the ground probe last tick) is
   **carried** by the same amount, again through the swept move, so a ride never passes
   through a wall either.
@@ -30,7 +32,8 @@ from functools import cached_property
 from math import ceil, floor
 
 from game.collision.aabb import Box
-from game.collision.shapes import Entry, TileKind, TileShape
+from game.collision.axis_sweep import move_x, move_y
+from game.collision.shapes import Entry, ShapeSource, TileKind, TileShape
 from game.collision.tile_grid import TileGrid
 from game.sim.sprite import Anchor, BoxSprite
 
@@ -138,6 +141,57 @@ class Platform(BoxSprite):
     def advance(self, dt_s: float) -> None:
         """Travel on along the route for one tick."""
         self.travelled_px += self.speed_px_s * dt_s
+
+
+def flush_before(face: float, size: float) -> float:
+    """Where a box of ``size`` starts to end exactly at ``face`` without crossing it:
+    ``face - size``, or the float just below when rounding would put its end past the face.
+
+    >>> flush_before(58.0, 12.0), flush_before(0.1, 0.3) + 0.3 <= 0.1
+    (46.0, True)
+    """
+    start = face - size
+    while start + size > face:  # only when rounding carried the end past the face
+        start = math.nextafter(start, -math.inf)
+    return start
+
+
+def push(solids: ShapeSource, body: Box, pusher: Box, axis: str, step: float,
+         ) -> tuple[Box, bool]:
+    """Where a body in a moving pusher's way ends, and whether it is crushed.
+
+    ``pusher`` is where the platform now is, having moved ``step`` px along ``axis`` (``"x"``
+    or ``"y"``). The body's goal is the box flush against the pusher's leading face, worked
+    out from that face alone; it is swept there against ``solids`` (the level less the
+    pusher). With room it ends exactly at its goal, touching the face and not overlapping
+    it. It is crushed only when a wall stops it short of the goal, and then it stays
+    flush against that wall.
+
+    >>> from game.collision.tile_grid import TileGrid
+    >>> walls = TileGrid(cols=10, rows=4, tile_w=16, tile_h=16)
+    >>> push(walls, Box(56, 0, 12, 14), Box(42.00000000000001, 0, 16, 64), "x", 2.0)
+    (Box(x=58.00000000000001, y=0, w=12, h=14), False)
+    >>> push(walls, Box(140, 0, 12, 14), Box(138, 0, 16, 64), "x", 2.0)   # the map's edge
+    (Box(x=148, y=0, w=12, h=14), True)
+    """
+    x, y, w, h = body
+    if axis == "x":
+        goal = (Box(pusher.right, y, w, h) if step > 0
+                else Box(flush_before(pusher.left, w), y, w, h))
+        move = move_x(solids, body, goal.x - x)
+    else:
+        goal = (Box(x, pusher.bottom, w, h) if step > 0
+                else Box(x, flush_before(pusher.top, h), w, h))
+        move = move_y(solids, body, goal.y - y)
+    hit = move.hit
+    if hit is None:
+        return goal, False
+    # Stopped: short of the goal is a crush; a wall exactly at the goal's far side is room.
+    if axis == "x":
+        short = hit.face < goal.right if step > 0 else hit.face > goal.left
+    else:
+        short = hit.face < goal.bottom if step > 0 else hit.face > goal.top
+    return (move.box, True) if short else (goal, False)
 
 
 def route_region(spec: PlatformSpec) -> Box:

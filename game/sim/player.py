@@ -2,17 +2,24 @@
 
 Where it sits: step 1 of a tick chooses the velocity (:meth:`Player.decide`); steps 3-4
 move it (:mod:`game.collision.axis_sweep`); :meth:`Player.react` then reads the hits. The
-player never moves itself, so there is exactly one place positions change.
+player only ever chooses a velocity; its box changes in five places, each through
+:meth:`~game.sim.sprite.BoxSprite.place`: the x and y passes of a tick (step 4 of
+:meth:`~game.sim.world.World.step`), a moving platform's push and its carry (step 2,
+``World._move_platform``), a respawn after a lost life (step 9, :meth:`Player.respawn`) and
+a reload of the map that keeps the player where it stood
+(:meth:`~game.sim.campaign.Campaign.reload`, for ``--watch``).
 
 What it teaches: the forgiving rules that make a platformer feel good, each a tunable in
-:class:`game.sim.tuning.Tuning` and a test in ``tests/test_feel.py``:
+:class:`game.sim.tuning.Tuning` (the drop's length is :data:`DROP_THROUGH_TICKS`, below) and
+a test in ``tests/test_feel.py``, with its number pinned at its edge in ``tests/test_edges.py``:
 
 * **Acceleration and friction**: the run speed approaches its target at a rate derived from
   a time to full speed (quicker on the ground than in the air).
 * **Variable jump height**: letting go of jump while rising cuts the upward speed.
 * **Coyote time**: a jump pressed a few ticks after running off a ledge still happens.
 * **Jump buffering**: a jump pressed a few ticks before landing happens on landing.
-* **Drop through**: down + jump on a one-way platform falls through it.
+* **Drop through**: down + jump on a one-way platform falls through it (not where the feet
+  are partly on a Solid at the same height: that is an ordinary jump).
 """
 
 from __future__ import annotations

@@ -72,19 +72,11 @@ from game.sim.enemy import Enemy, EnemyKind, Squashed
 from game.sim.inputs import Actions
 from game.sim.level import Level
 from game.sim.pickups import Checkpoint, Coin, Exit, Trigger, TriggerCells
-from game.sim.platforms import Platform, PlatformIndex
+from game.sim.platforms import Platform, PlatformIndex, push
 from game.sim.player import Player
 from game.sim.query_log import QueryLog, logged_lookups
 from game.sim.solids import LevelSolids, Lookups
 from game.sim.tuning import Tuning
-
-
-def _push_needed(pusher: Box, body: Box, axis: str, step: float) -> float:
-    """How far ``body`` must move along ``axis`` to sit flush against the moving ``pusher``."""
-    if axis == "x":
-        return pusher.right - body.left if step > 0 else pusher.left - body.right
-    return pusher.bottom - body.top if step > 0 else pusher.top - body.bottom
-
 
 SQUASH_TICKS = 20  # how long a stomped enemy stays on screen, flattened
 SKY_LIMIT_PX = 1_000_000.0  # how far above the map a body may fly before the sky stops it
@@ -439,9 +431,8 @@ class World:
                 bx, by, bw, bh = body.box
                 if (solid and bw > 0 and bh > 0 and bx < right and left < bx + bw
                         and by < bottom and top < by + bh):
-                    body.place(move(others, body.box,
-                                    _push_needed(at, body.box, axis, step)).box)
-                    body.crushed = body.box.overlaps(at)
+                    pushed_to, body.crushed = push(others, body.box, at, axis, step)
+                    body.place(pushed_to)
                     moved.append(body)
                 elif body in riders:
                     body.place(move(others, body.box, step).box)
