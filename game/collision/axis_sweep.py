@@ -187,9 +187,9 @@ def move_body(solids: ShapeSource, box: Box, dx: float, dy: float, *,
     if not -SKY_LIMIT_PX <= y <= solids.height_px:
         y = min(max(y, -SKY_LIMIT_PX), float(solids.height_px))
         y_move = Move(Box(x, y, w, h), y_move.hit, y_move.start, y_move.dx, y_move.dy)
-    landed = y_move.hit
-    if landed is not None and landed.face == y + h and landed.side is Side.BOTTOM:
-        ground = landed.shape  # the y move found the floor at the feet: no probe needed
+    landed = y_move.hit if dy > 0 else None  # what stopped a fall: a floor
+    if landed is not None and landed.face == y + h:
+        ground = landed.shape  # the fall found the floor at the feet: no probe needed
     else:
         ground = ground_under(solids, y_move.box, through_one_way=through_one_way)
     return BodyMoves(x_move, y_move, ground)
