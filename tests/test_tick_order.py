@@ -1,15 +1,22 @@
 """The tick is written down three times, and the three say the same: the numbered comments in
 ``World.step`` (what runs), the list in ``game/sim/world.py``'s docstring, and the README's
-tour of a tick. Each is read as a list of (number, name) and the lists must be equal."""
+tour of a tick. Each is read as a list of (number, name) and the lists must be equal. And
+the tick stays short to read: ``World.step`` a table of contents of short phases, and a
+tick of the first level a few hundred lines in a few files."""
 
 from __future__ import annotations
 
 import inspect
 import re
+import sys
 from pathlib import Path
+from types import FrameType
+from typing import Any
 
+from game.app.run import input_script
 from game.collision import axis_sweep
 from game.collision.tile_grid import TileGrid
+from game.levels import LEVELS_DIR, load_level
 from game.sim import world
 from game.sim.world import World
 
@@ -64,3 +71,57 @@ def test_the_tick_and_the_collision_path_carry_no_logging_code() -> None:
                   axis_sweep.ground_under, axis_sweep.slide_past_ceiling_corner):
         source = inspect.getsource(plain)
         assert not re.search(r"log|stats|purpose|count", source), plain.__qualname__
+
+
+PHASE_LINES = 40  # longest a phase of the tick may be (a method World.step calls)
+STEP_LINES = 60   # longest World.step may be: a table of contents of its phases
+TICK_FILES = 8    # the files of game/ a typical tick of level 1 runs code in
+TICK_LINES = 400  # the lines of game/ the first ticks of level 1 run, all told
+TRACED_TICKS = 300
+
+
+def traced_ticks(ticks: int) -> list[set[tuple[str, int]]]:
+    """Level 1 played by its winning script: the (file, line) pairs of ``game/`` each tick
+    runs, counted by the interpreter's line tracer."""
+    script = input_script(ROOT / "tests" / "scripts" / "01-first-steps.txt")
+    world = World(load_level(LEVELS_DIR / "01-first-steps.tmx"))
+    game = str(ROOT / "game")
+    runs: list[set[tuple[str, int]]] = []
+    ran: set[tuple[str, int]] = set()
+
+    def each_line(frame: FrameType, event: str, _: object) -> Any:
+        if event == "line":
+            ran.add((frame.f_code.co_filename, frame.f_lineno))
+        return each_line
+
+    def each_call(frame: FrameType, _event: str, _arg: object) -> Any:
+        return each_line if frame.f_code.co_filename.startswith(game) else None
+
+    was = sys.gettrace()
+    try:
+        for tick in range(ticks):
+            held = script.held_at(tick)
+            ran = set()
+            sys.settrace(each_call)
+            world.step(held)
+            sys.settrace(was)
+            runs.append(ran)
+    finally:
+        sys.settrace(was)
+    return runs
+
+
+def test_a_tick_is_a_short_table_of_contents_of_short_phases() -> None:
+    assert len(inspect.getsource(World.step).splitlines()) <= STEP_LINES
+    called = set(re.findall(r"self\.(_\w+)\(", inspect.getsource(World.step)))
+    assert len(called) >= 8
+    for name in called:
+        assert len(inspect.getsource(getattr(World, name)).splitlines()) <= PHASE_LINES, name
+
+
+def test_a_tick_of_the_first_level_runs_a_few_hundred_lines_in_a_few_files() -> None:
+    """Counts of code run, not times: what a reader following a tick has to read."""
+    runs = traced_ticks(TRACED_TICKS)
+    assert len(set().union(*runs)) <= TICK_LINES
+    files = sorted(len({path for path, _ in ran}) for ran in runs)
+    assert files[len(files) // 2] <= TICK_FILES  # the median tick
