@@ -234,7 +234,8 @@ class World:
 
     def _lookups(self) -> Lookups:
         """The sources this tick asks: plain, or each wrapped to write its lookups in a
-        fresh :attr:`query_log` while ``measure.queries`` is on (the debug overlay)."""
+        fresh :attr:`query_log` while ``measure.queries`` is on (the debug overlay). A log
+        left from a measured tick is emptied on the first tick nobody measures."""
         if self.measure.queries or self.query_log.queries:
             self.query_log.clear()
         return self._logged if self.measure.queries else self._plain
