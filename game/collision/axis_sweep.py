@@ -39,6 +39,11 @@ moving side of the body: where it would end with nothing in the way, then each n
 >>> move = move_x(grid, Box(10, 2, 12, 12), 500.0)      # 500 px in one tick: still stops
 >>> move.box.x, move.hit.side, move.hit.face
 (68, <Side.RIGHT: 'right'>, 80)
+>>> for col in range(10):                                # a floor along the bottom row
+...     grid.put(col, 3, TileShape(Box(col * 16, 48, 16, 16), TileKind.SOLID, col, 3))
+>>> moves = move_body(grid, Box(10, 20, 12, 14), 30.0, 40.0)
+>>> moves.x.box.x, moves.y.box.y, moves.y.hit.side, moves.ground is moves.y.hit.shape
+(40.0, 34, <Side.BOTTOM: 'bottom'>, True)
 """
 
 from __future__ import annotations
@@ -168,14 +173,6 @@ def move_body(solids: ShapeSource, box: Box, dx: float, dy: float, *,
     is the void and far above it (:data:`SKY_LIMIT_PX`) the sky ends, so a body flung at any
     speed keeps coordinates a Rect can hold. The feet then stand on the floor the y move
     landed on, or else on what the one-pixel probe finds.
-
-    >>> from game.collision.tile_grid import TileGrid
-    >>> grid = TileGrid(cols=10, rows=4, tile_w=16, tile_h=16)
-    >>> for col in range(10):
-    ...     grid.put(col, 3, TileShape(Box(col * 16, 48, 16, 16), TileKind.SOLID, col, 3))
-    >>> moves = move_body(grid, Box(10, 20, 12, 14), 30.0, 40.0)
-    >>> moves.x.box.x, moves.y.box.y, moves.y.hit.side, moves.ground is moves.y.hit.shape
-    (40.0, 34, <Side.BOTTOM: 'bottom'>, True)
     """
     x_move = move_x(solids, box, dx)
     y_move = move_y(solids, x_move.box, dy, through_one_way=through_one_way)

@@ -54,9 +54,6 @@ def run_change_px_s(tuning: Tuning, on_ground: bool, speeding_up: bool) -> float
 
     Rates are derived from the run speed, so a level that sets ``run_speed`` very high or
     very low keeps the same feel: full speed in the same number of ticks.
-
-    >>> run_change_px_s(Tuning(run_speed_px_s=60.0, run_accel_time_s=0.1), True, True)
-    10.0
     """
     if on_ground:
         seconds = tuning.run_accel_time_s if speeding_up else tuning.run_stop_time_s

@@ -201,13 +201,15 @@ class World:
         lookups = self._lookups()  # the source of solids each step asks
         started = time.perf_counter()
         events: list[Event] = []
-        self._fade_squashed()
+        for squash in self.squashed:  # a stomped enemy's time on screen counts down
+            squash.fade()  # (a Group iterates over a copy: kill() is safe)
         bodies = self.bodies()
         before = {body: body.box for body in bodies}
         # 1. Intent: entities choose velocities; none of them moves itself.
         self._choose_velocities(held, lookups.ledges, events)
         # 2. Platforms: each moves along its path, pushing and carrying bodies.
-        self._move_platforms(bodies, lookups.platforms)
+        if self._platform_list:
+            self._move_platforms(bodies, lookups.platforms)
         # 3. x pass: each body moves along x, stopping flush at the first solid face swept;
         # 4. y pass: then along y from there, is placed, and finds the ground under its feet.
         moves = self.moves = self._move_bodies(bodies, lookups.moving_bodies)
@@ -224,7 +226,7 @@ class World:
         touching = self._player_contacts(path, edges, near_trigger, lookups.hazards)
         self._enter_contacts(touching, before[self.player], edges, lookups, events)
         # 8. Enemies and hazards: a stomp from above; any other touch hurts.
-        hurt = self._meet_enemies_and_hazards(touching, before, events)
+        hurt = bool(touching) and self._meet_enemies_and_hazards(touching, before, events)
         # 9. The void and the crush: falling below the map or pushed into a wall.
         self._lose_lives(hurt, events)
         self._write_down(lookups, started)
@@ -240,11 +242,6 @@ class World:
             self.query_log.clear()
         return self._logged if self.measure.queries else self._plain
 
-    def _fade_squashed(self) -> None:
-        """Before step 1: a stomped enemy's time on screen counts down."""
-        for squash in self.squashed:  # a Group iterates over a copy: kill() is safe
-            squash.fade()
-
     def _choose_velocities(self, held: Actions, ledges: ShapeSource,
                            events: list[Event]) -> None:
         """Step 1: the player reads the held actions, the enemies look ahead for a ledge."""
@@ -259,8 +256,6 @@ class World:
         the platforms a body could meet push or carry; the others only advance."""
         for body in bodies:
             body.crushed = False
-        if not self._platform_list:
-            return
         dt = self.tuning.tick_s
         awake = self._platforms_near(bodies)
         for platform in self._platform_list:
