@@ -13,11 +13,15 @@ from pathlib import Path
 from types import FrameType
 from typing import Any
 
+import pytest
+
 from game.app.run import input_script
 from game.collision import axis_sweep
+from game.collision.shapes import Entry
 from game.collision.tile_grid import TileGrid
 from game.levels import LEVELS_DIR, load_level
 from game.sim import world
+from game.sim.platforms import Platform, PlatformIndex
 from game.sim.world import World
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -41,10 +45,13 @@ def steps_in_the_docstring() -> Steps:
     return numbered_bold_items(world.__doc__ or "")
 
 
-def steps_in_the_readme() -> Steps:
+def steps_text_of_the_readme() -> str:
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    tour = readme.split("## How collision works here", 1)[1].split("\n## ", 1)[0]
-    return numbered_bold_items(tour)
+    return readme.split("## How collision works here", 1)[1].split("\n## ", 1)[0]
+
+
+def steps_in_the_readme() -> Steps:
+    return numbered_bold_items(steps_text_of_the_readme())
 
 
 def test_the_code_numbers_its_steps_one_to_n_in_order() -> None:
@@ -125,3 +132,25 @@ def test_a_tick_of_the_first_level_runs_a_few_hundred_lines_in_a_few_files() -> 
     assert len(set().union(*runs)) <= TICK_LINES
     files = sorted(len({path for path, _ in ran}) for ran in runs)
     assert files[len(files) // 2] <= TICK_FILES  # the median tick
+
+
+def test_the_platforms_query_the_tour_cites_is_the_one_a_tick_asks(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """Step 3 of the README's tour names ``PlatformIndex.entries_in`` as the platforms'
+    query: on a shipped level with platforms, the tick's lookups go through it."""
+    tour = steps_text_of_the_readme()
+    assert "PlatformIndex.entries_in" in tour
+    asked: list[tuple[float, ...]] = []
+    plain = PlatformIndex.entries_in
+
+    def counted(index: PlatformIndex, left: float, top: float, right: float, bottom: float,
+                leaving_out: Platform | None = None) -> list[Entry]:
+        asked.append((left, top, right, bottom))
+        return plain(index, left, top, right, bottom, leaving_out)
+
+    monkeypatch.setattr(PlatformIndex, "entries_in", counted)
+    script = input_script(ROOT / "tests" / "scripts" / "04-moving-parts.txt")
+    world = World(load_level(LEVELS_DIR / "04-moving-parts.tmx"))
+    for tick in range(TRACED_TICKS):
+        world.step(script.held_at(tick))
+    assert asked
