@@ -6,6 +6,7 @@ tick of the first level a few hundred lines in a few files."""
 
 from __future__ import annotations
 
+import ast
 import inspect
 import re
 import sys
@@ -154,3 +155,26 @@ def test_the_platforms_query_the_tour_cites_is_the_one_a_tick_asks(
     for tick in range(TRACED_TICKS):
         world.step(script.held_at(tick))
     assert asked
+
+
+TICK_MODULES = ["game/collision/axis_sweep.py", "game/collision/tile_grid.py",
+                "game/sim/world.py", "game/sim/solids.py", "game/sim/body.py",
+                "game/sim/player.py", "game/sim/enemy.py", "game/sim/pickups.py"]
+
+
+@pytest.mark.parametrize("path", TICK_MODULES)
+def test_the_tick_reads_plainly_each_name_for_what_it_is(path: str) -> None:
+    """No module of a tick renames an enum's members (a side, a kind, an action read as a
+    bare ``LEFT`` means one thing here and another there) or builds a tuple around its
+    class's own constructor: the code says what it means, spelt as it reads."""
+    source = (ROOT / path).read_text(encoding="utf-8")
+    tree = ast.parse(source)
+    for node in tree.body:
+        if isinstance(node, ast.Assign):
+            values = node.value.elts if isinstance(node.value, ast.Tuple) else [node.value]
+            for value in values:
+                assert not (isinstance(value, ast.Attribute) and value.attr.isupper()
+                            and isinstance(value.value, ast.Name)
+                            and value.value.id[:1].isupper()), (path, ast.unparse(node))
+    assert "tuple.__new__" not in source
+    assert "Speed, kept" not in source
