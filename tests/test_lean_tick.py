@@ -20,10 +20,9 @@ from hypothesis import strategies as st
 
 from game.app.run import input_script
 from game.collision.aabb import Box
-from game.collision.axis_sweep import Edges
+from game.collision.axis_sweep import BodyMoves, Edges
 from game.collision.shapes import ShapeSource, TileKind
 from game.levels import LEVELS_DIR, load_level
-from game.sim.body import BodyMoves
 from game.sim.enemy import LEDGE_PROBE_PX, Enemy
 from game.sim.level import Level
 from game.sim.pickups import TriggerCells
@@ -70,7 +69,7 @@ def _contacts_in_full(world: World, player: BodyMoves) -> set[tuple[ContactKey, 
     for number, enemy in world.enemy_by_number.items():
         if enemy.alive() and crossed(player, enemy):
             pairs.add((PLAYER_KEY, ("enemy", number)))
-    for move in player:
+    for move in (player.x, player.y):
         for entry in world.grid.entries_in(*move.path_edges):
             if entry.kind is TileKind.HAZARD:
                 pairs.add((PLAYER_KEY, ("hazard", entry.shape.row * world.grid.cols
@@ -100,9 +99,9 @@ def audit(level_path: Path) -> Audit:
     seen = Audit()
     tick = 0
 
-    def checked(path: BodyMoves, reach: Edges, near_trigger: bool, hazards: ShapeSource,
+    def checked(path: BodyMoves, edges: Edges, near_trigger: bool, hazards: ShapeSource,
                 ) -> set[tuple[ContactKey, ContactKey]]:
-        found = contacts_of_tick(path, reach, near_trigger, hazards)
+        found = contacts_of_tick(path, edges, near_trigger, hazards)
         full = _contacts_in_full(world, path)
         if found != full:
             seen.contacts_differ.append((tick, found, full))

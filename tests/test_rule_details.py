@@ -21,7 +21,7 @@ from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import CountedGrid, TileGrid
 from game.sim.inputs import NOTHING, Action, Actions
 from game.sim.platforms import Platform, PlatformIndex, PlatformSpec, Route
-from game.sim.player import Player, approach
+from game.sim.player import Player, approach, run_change_px_s
 from game.sim.query_log import LoggedSource, Query, QueryLog
 from game.sim.solids import LevelSolids, Lookups
 from game.sim.tuning import Tuning
@@ -319,7 +319,7 @@ def test_plain_lookups_ask_the_level_s_solids_and_each_platform_pushes_without_i
             for n, x in ((0, 0.0), (1, 8.0)))
     solids = LevelSolids(grid, PlatformIndex(grid, [a, b]))
     lookups = Lookups.plain(solids, [a, b])
-    for source in (lookups.ledges, lookups.x_sweep, lookups.y_sweep, lookups.ground_probe,
+    for source in (lookups.ledges, lookups.moving_bodies,
                    lookups.hazards, lookups.checkpoint_spawn, lookups.penetration):
         assert source is solids
     assert [s.without for s in lookups.platforms] == [a, b]  # type: ignore[attr-defined]
@@ -381,13 +381,13 @@ def test_a_level_property_that_is_not_a_number_is_ignored() -> None:
 def test_the_run_rate_comes_from_the_ground_or_air_time_of_speeding_up_or_stopping() -> None:
     tuning = Tuning(run_speed_px_s=60.0, run_accel_time_s=0.1, run_stop_time_s=0.2,
                     air_accel_time_s=0.25, air_stop_time_s=0.5)
-    assert tuning.run_change_px_s(on_ground=True, speeding_up=True) == pytest.approx(10.0)
-    assert tuning.run_change_px_s(on_ground=True, speeding_up=False) == pytest.approx(5.0)
-    assert tuning.run_change_px_s(on_ground=False, speeding_up=True) == pytest.approx(4.0)
-    assert tuning.run_change_px_s(on_ground=False, speeding_up=False) == pytest.approx(2.0)
+    assert run_change_px_s(tuning, on_ground=True, speeding_up=True) == pytest.approx(10.0)
+    assert run_change_px_s(tuning, on_ground=True, speeding_up=False) == pytest.approx(5.0)
+    assert run_change_px_s(tuning, on_ground=False, speeding_up=True) == pytest.approx(4.0)
+    assert run_change_px_s(tuning, on_ground=False, speeding_up=False) == pytest.approx(2.0)
     instant = Tuning(run_accel_time_s=0.0, air_stop_time_s=-1.0)
-    assert instant.run_change_px_s(on_ground=True, speeding_up=True) == math.inf
-    assert instant.run_change_px_s(on_ground=False, speeding_up=False) == math.inf
+    assert run_change_px_s(instant, on_ground=True, speeding_up=True) == math.inf
+    assert run_change_px_s(instant, on_ground=False, speeding_up=False) == math.inf
 
 
 def test_the_tick_counts_are_worked_out_from_the_times() -> None:

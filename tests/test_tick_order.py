@@ -1,16 +1,28 @@
 """The tick is written down three times, and the three say the same: the numbered comments in
 ``World.step`` (what runs), the list in ``game/sim/world.py``'s docstring, and the README's
-tour of a tick. Each is read as a list of (number, name) and the lists must be equal."""
+tour of a tick. Each is read as a list of (number, name) and the lists must be equal. And
+the tick stays short to read: ``World.step`` a table of contents of short phases, and a
+tick of the first level a few hundred lines in a few files."""
 
 from __future__ import annotations
 
+import ast
 import inspect
 import re
+import sys
 from pathlib import Path
+from types import FrameType
+from typing import Any
 
+import pytest
+
+from game.app.run import input_script
 from game.collision import axis_sweep
+from game.collision.shapes import Entry
 from game.collision.tile_grid import TileGrid
+from game.levels import LEVELS_DIR, load_level
 from game.sim import world
+from game.sim.platforms import Platform, PlatformIndex
 from game.sim.world import World
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -34,10 +46,13 @@ def steps_in_the_docstring() -> Steps:
     return numbered_bold_items(world.__doc__ or "")
 
 
-def steps_in_the_readme() -> Steps:
+def steps_text_of_the_readme() -> str:
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    tour = readme.split("## How collision works here", 1)[1].split("\n## ", 1)[0]
-    return numbered_bold_items(tour)
+    return readme.split("## How collision works here", 1)[1].split("\n## ", 1)[0]
+
+
+def steps_in_the_readme() -> Steps:
+    return numbered_bold_items(steps_text_of_the_readme())
 
 
 def test_the_code_numbers_its_steps_one_to_n_in_order() -> None:
@@ -64,3 +79,102 @@ def test_the_tick_and_the_collision_path_carry_no_logging_code() -> None:
                   axis_sweep.ground_under, axis_sweep.slide_past_ceiling_corner):
         source = inspect.getsource(plain)
         assert not re.search(r"log|stats|purpose|count", source), plain.__qualname__
+
+
+PHASE_LINES = 40  # longest a phase of the tick may be (a method World.step calls)
+STEP_LINES = 60   # longest World.step may be: a table of contents of its phases
+TICK_FILES = 8    # the files of game/ a typical tick of level 1 runs code in
+TICK_LINES = 400  # the lines of game/ the first ticks of level 1 run, all told
+TRACED_TICKS = 300
+
+
+def traced_ticks(ticks: int) -> list[set[tuple[str, int]]]:
+    """Level 1 played by its winning script: the (file, line) pairs of ``game/`` each tick
+    runs, counted by the interpreter's line tracer."""
+    script = input_script(ROOT / "tests" / "scripts" / "01-first-steps.txt")
+    world = World(load_level(LEVELS_DIR / "01-first-steps.tmx"))
+    game = str(ROOT / "game")
+    runs: list[set[tuple[str, int]]] = []
+    ran: set[tuple[str, int]] = set()
+
+    def each_line(frame: FrameType, event: str, _: object) -> Any:
+        if event == "line":
+            ran.add((frame.f_code.co_filename, frame.f_lineno))
+        return each_line
+
+    def each_call(frame: FrameType, _event: str, _arg: object) -> Any:
+        return each_line if frame.f_code.co_filename.startswith(game) else None
+
+    was = sys.gettrace()
+    try:
+        for tick in range(ticks):
+            held = script.held_at(tick)
+            ran = set()
+            sys.settrace(each_call)
+            world.step(held)
+            sys.settrace(was)
+            runs.append(ran)
+    finally:
+        sys.settrace(was)
+    return runs
+
+
+def test_a_tick_is_a_short_table_of_contents_of_short_phases() -> None:
+    assert len(inspect.getsource(World.step).splitlines()) <= STEP_LINES
+    called = set(re.findall(r"self\.(_\w+)\(", inspect.getsource(World.step)))
+    assert len(called) >= 8
+    for name in called:
+        assert len(inspect.getsource(getattr(World, name)).splitlines()) <= PHASE_LINES, name
+
+
+def test_a_tick_of_the_first_level_runs_a_few_hundred_lines_in_a_few_files() -> None:
+    """Counts of code run, not times: what a reader following a tick has to read."""
+    runs = traced_ticks(TRACED_TICKS)
+    assert len(set().union(*runs)) <= TICK_LINES
+    files = sorted(len({path for path, _ in ran}) for ran in runs)
+    assert files[len(files) // 2] <= TICK_FILES  # the median tick
+
+
+def test_the_platforms_query_the_tour_cites_is_the_one_a_tick_asks(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """Step 3 of the README's tour names ``PlatformIndex.entries_in`` as the platforms'
+    query: on a shipped level with platforms, the tick's lookups go through it."""
+    tour = steps_text_of_the_readme()
+    assert "PlatformIndex.entries_in" in tour
+    asked: list[tuple[float, ...]] = []
+    plain = PlatformIndex.entries_in
+
+    def counted(index: PlatformIndex, left: float, top: float, right: float, bottom: float,
+                leaving_out: Platform | None = None) -> list[Entry]:
+        asked.append((left, top, right, bottom))
+        return plain(index, left, top, right, bottom, leaving_out)
+
+    monkeypatch.setattr(PlatformIndex, "entries_in", counted)
+    script = input_script(ROOT / "tests" / "scripts" / "04-moving-parts.txt")
+    world = World(load_level(LEVELS_DIR / "04-moving-parts.tmx"))
+    for tick in range(TRACED_TICKS):
+        world.step(script.held_at(tick))
+    assert asked
+
+
+TICK_MODULES = ["game/collision/axis_sweep.py", "game/collision/tile_grid.py",
+                "game/sim/world.py", "game/sim/solids.py", "game/sim/body.py",
+                "game/sim/player.py", "game/sim/enemy.py", "game/sim/pickups.py"]
+
+
+@pytest.mark.parametrize("path", TICK_MODULES)
+def test_the_tick_reads_plainly_each_name_for_what_it_is(path: str) -> None:
+    """No module of a tick renames an enum's members (a side, a kind, an action read as a
+    bare ``LEFT`` means one thing here and another there) or builds a tuple around its
+    class's own constructor: the code says what it means, spelt as it reads."""
+    source = (ROOT / path).read_text(encoding="utf-8")
+    tree = ast.parse(source)
+    for node in tree.body:
+        if isinstance(node, ast.Assign):
+            values = node.value.elts if isinstance(node.value, ast.Tuple) else [node.value]
+            for value in values:
+                assert not (isinstance(value, ast.Attribute) and value.attr.isupper()
+                            and isinstance(value.value, ast.Name)
+                            and value.value.id[:1].isupper()), (path, ast.unparse(node))
+    assert "tuple.__new__" not in source
+    assert "Speed, kept" not in source

@@ -261,7 +261,7 @@ def played_moves() -> tuple[Sample, ...]:
         world.step(script.held_at(tick))
         moves = world.moves.get(world.player)
         if moves is not None:
-            across, down = moves
+            across, down = moves.x, moves.y
             b = across.start
             samples.append(Sample(b.x, b.y, b.w, b.h, across.dx, down.dy))
     return tuple(samples)

@@ -59,8 +59,8 @@ class Circle:
             return False
         dx = other.cx - self.cx
         dy = other.cy - self.cy
-        reach = self.r + other.r
-        return dx * dx + dy * dy < reach * reach
+        radii = self.r + other.r
+        return dx * dx + dy * dy < radii * radii
 
     def overlaps_box(self, box: Box) -> bool:
         """True when the disc and the box share interior points (the box must be normalised).
@@ -105,8 +105,8 @@ def circles_may_touch(a: Circle, b: Circle) -> bool:
     """
     dx = b.cx - a.cx
     dy = b.cy - a.cy
-    reach = a.r + b.r
-    return dx * dx + dy * dy <= reach * reach
+    radii = a.r + b.r
+    return dx * dx + dy * dy <= radii * radii
 
 
 def precheck_then_rect(a: pygame.Rect, b: pygame.Rect) -> bool:

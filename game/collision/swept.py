@@ -9,10 +9,11 @@ cheaper methods it replaces set beside it for comparison. The level checker runs
 
 What it teaches:
   * **Time of impact by slabs.** On each axis the two boxes' intervals overlap during an
-    open window of time: they start overlapping at ``entry`` and stop at ``exit``, which
+    open window of time: they start overlapping at ``enter`` and cease at ``leave``, which
     are gaps divided by the speed. The boxes overlap while *both* windows are open, so the
-    hit starts at the later entry and ends at the earlier exit. It is a hit in this tick when
-    that window is not empty and begins before ``t = 1``. Exact at any speed, even at corners.
+    hit starts at the later ``enter`` and ends at the earlier ``leave``. It is a hit in this
+    tick when that window is not empty and begins before ``t = 1``. Exact at any speed,
+    even at corners.
   * **The normal is the axis that entered last**: the face the box actually struck.
   * **Strict, like everything here.** Ending the move exactly flush is not a hit (the next
     tick's move will start flush and hit at ``t = 0``); sliding along a face is not a hit;
@@ -91,30 +92,30 @@ def sweep(box: Box, dx: float, dy: float, wall: Box) -> Contact | None:
     if w <= 0 or h <= 0 or wall_w <= 0 or wall_h <= 0:
         return None
     right, bottom, wall_right, wall_bottom = x + w, y + h, wall_x + wall_w, wall_y + wall_h
-    # Each axis: the open window of time (entry, exit) during which the intervals overlap.
+    # Each axis: the open window of time (enter, leave) during which the intervals overlap.
     if dx == 0:
         if not (x < wall_right and wall_x < right):
             return None  # never overlapping on x, so never at all
-        x_entry, x_exit = -math.inf, math.inf
+        x_enter, x_leave = -math.inf, math.inf
     elif dx > 0:
-        x_entry, x_exit = (wall_x - right) / dx, (wall_right - x) / dx
+        x_enter, x_leave = (wall_x - right) / dx, (wall_right - x) / dx
     else:
-        x_entry, x_exit = (wall_right - x) / dx, (wall_x - right) / dx
+        x_enter, x_leave = (wall_right - x) / dx, (wall_x - right) / dx
     if dy == 0:
         if not (y < wall_bottom and wall_y < bottom):
             return None
-        y_entry, y_exit = -math.inf, math.inf
+        y_enter, y_leave = -math.inf, math.inf
     elif dy > 0:
-        y_entry, y_exit = (wall_y - bottom) / dy, (wall_bottom - y) / dy
+        y_enter, y_leave = (wall_y - bottom) / dy, (wall_bottom - y) / dy
     else:
-        y_entry, y_exit = (wall_bottom - y) / dy, (wall_y - bottom) / dy
-    entry, leave = max(x_entry, y_entry), min(x_exit, y_exit)
-    if not (entry < leave and entry < 1 and leave > 0):
+        y_enter, y_leave = (wall_bottom - y) / dy, (wall_y - bottom) / dy
+    enter, leave = max(x_enter, y_enter), min(x_leave, y_leave)
+    if not (enter < leave and enter < 1 and leave > 0):
         return None
-    if entry < 0:
+    if enter < 0:
         return Contact(0.0, 0, 0)
-    t = entry if entry > 0 else 0.0  # never -0.0
-    if y_entry >= x_entry:  # the tie rule: y wins
+    t = enter if enter > 0 else 0.0  # never -0.0
+    if y_enter >= x_enter:  # the tie rule: y wins
         return Contact(t, 0, -_sign(dy))
     return Contact(t, -_sign(dx), 0)
 

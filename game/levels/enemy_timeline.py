@@ -102,7 +102,7 @@ class EnemyTimeline:
         path = self.world.moves.get(self.world.player)
         if path is None:  # a life was lost, and the player put back at a respawn place
             return False
-        left, top, right, bottom = path.reach()
+        left, top, right, bottom = path.path_edges()
         for number, _ in away:
             x, y, w, h = self.states[tick][number]["box"]
             if (x - CLOSE_PX < right and left < x + w + CLOSE_PX

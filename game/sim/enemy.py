@@ -37,8 +37,6 @@ class EnemyKind(Enum):
     HOPPER = "hopper"
 
 
-HOPPER = EnemyKind.HOPPER  # read every tick: a module name, as in game.collision.axis_sweep
-
 
 class Enemy(Body):
     """Patrols at ``speed_px_s``, starting towards the left; a hopper only moves mid-hop."""
@@ -58,7 +56,7 @@ class Enemy(Body):
         if self.on_ground and not self._ground_ahead(solids):
             self.direction = -self.direction
         self.vx = self.direction * self.speed_px_s
-        if self.kind is HOPPER:
+        if self.kind is EnemyKind.HOPPER:
             self._hop(tuning)
         self.vy = min(self.vy + tuning.gravity_px_s2 * tuning.tick_s,
                       tuning.max_fall_speed_px_s)
@@ -83,18 +81,17 @@ class Enemy(Body):
         have moved on since it was seen).
         """
         x, y, w, h = self.box
-        front = x + w if self.direction > 0 else x - LEDGE_PROBE_PX
+        ahead = x + w if self.direction > 0 else x - LEDGE_PROBE_PX
         feet = y + h
         for known in (self.standing_on, self.ground_seen):
             if known is not None:
                 left, top, width, height = known.box
-                if (left < front + LEDGE_PROBE_PX and front < left + width
+                if (left < ahead + LEDGE_PROBE_PX and ahead < left + width
                         and top < feet + LEDGE_PROBE_PX and feet < top + height):
                     return True
-        hazard = TileKind.HAZARD
-        for entry in solids.entries_in(front, feet, front + LEDGE_PROBE_PX,
+        for entry in solids.entries_in(ahead, feet, ahead + LEDGE_PROBE_PX,
                                        feet + LEDGE_PROBE_PX):
-            if entry.kind is not hazard:
+            if entry.kind is not TileKind.HAZARD:
                 shape = entry.shape
                 self.ground_seen = shape if shape.col != -1 else None
                 return True

@@ -48,10 +48,8 @@ class TriggerCells:
     test afterwards turns such a near miss away).
 
     The cells are kept column by column (``rows``: the rows filed in each column), so a
-    path, a column or two wide, looks up its columns and finds most of them hold nothing.
-    Speed, kept: looking up each cell of the path as a ``(col, row)`` pair took about half
-    as long again (timeit, the calls of a solve of The Summit, 2.1 against 1.3 µs a call,
-    medians of five runs).
+    path, a column or two wide, looks up its columns and finds most of them hold nothing:
+    fewer lookups than one for each ``(col, row)`` cell the path covers.
     """
 
     tile_w: int

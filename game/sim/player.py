@@ -1,9 +1,9 @@
 """The player: turns held actions into a velocity, and reacts to what its moves hit.
 
 Where it sits: step 1 of a tick chooses the velocity (:meth:`Player.decide`); steps 3-4
-move it (:mod:`game.collision.axis_sweep`); :meth:`Player.react` then reads the hits. The
-player only ever chooses a velocity; its box changes in five places, each through
-:meth:`~game.sim.sprite.BoxSprite.place`: the x and y passes of a tick (step 4 of
+move it (:func:`game.collision.axis_sweep.move_body`); :meth:`Player.react` then reads the
+hits. The player only ever chooses a velocity; its box changes in five places, each through
+:meth:`~game.sim.sprite.BoxSprite.place`: the x and y passes of a tick (steps 3-4 of
 :meth:`~game.sim.world.World.step`), a moving platform's push and its carry (step 2,
 ``World._move_platform``), a respawn after a lost life (step 9, :meth:`Player.respawn`) and
 a reload of the map that keeps the player where it stood
@@ -27,7 +27,7 @@ from __future__ import annotations
 import pygame
 
 from game.collision.aabb import Box
-from game.collision.axis_sweep import BOTTOM, TOP, Move
+from game.collision.axis_sweep import Move, Side
 from game.sim.body import Body
 from game.sim.inputs import Action, Actions
 from game.sim.sprite import ANIMATION_HZ, Strip, animation_index
@@ -44,11 +44,6 @@ JUMP_FRAME = 6  # rising
 FALL_FRAME = 7
 BLINK_HZ = 10  # while invulnerable after a hit, the player flickers at this rate
 
-# Speed, kept: the held actions are read as module names, not off their class, as the
-# moves read their sides (game.collision.axis_sweep): it takes about a sixth off each
-# call of decide (timeit, 2.2 against 2.6 µs, medians of three runs).
-LEFT, RIGHT, DOWN, JUMP = Action.LEFT, Action.RIGHT, Action.DOWN, Action.JUMP
-
 
 def approach(value: float, target: float, step: float) -> float:
     """Move ``value`` towards ``target`` by at most ``step``.
@@ -59,6 +54,21 @@ def approach(value: float, target: float, step: float) -> float:
     if value < target:
         return min(value + step, target)
     return max(value - step, target)
+
+
+def run_change_px_s(tuning: Tuning, on_ground: bool, speeding_up: bool) -> float:
+    """How much the run speed may change in one tick (px/s), from the tuning's times.
+
+    Rates are derived from the run speed, so a level that sets ``run_speed`` very high or
+    very low keeps the same feel: full speed in the same number of ticks.
+    """
+    if on_ground:
+        seconds = tuning.run_accel_time_s if speeding_up else tuning.run_stop_time_s
+    else:
+        seconds = tuning.air_accel_time_s if speeding_up else tuning.air_stop_time_s
+    if seconds <= 0:
+        return float("inf")
+    return tuning.run_speed_px_s * tuning.tick_s / seconds
 
 
 class Player(Body):
@@ -76,25 +86,21 @@ class Player(Body):
         self._jump_was_held = False
 
     @property
-    def dropping_through(self) -> bool:
-        return self.drop_ticks_left > 0
-
-    @property
     def invulnerable(self) -> bool:
         return self.invulnerable_ticks_left > 0
 
     def decide(self, held: Actions, tuning: Tuning) -> bool:
         """Set the velocity for this tick from the held actions; True if a jump started."""
         # Run: approach the target speed at the ground or air rate.
-        direction = (RIGHT in held) - (LEFT in held)
+        direction = (Action.RIGHT in held) - (Action.LEFT in held)
         target = direction * tuning.run_speed_px_s
         speeding_up = direction != 0 and (self.vx * direction >= 0)
-        self.vx = approach(self.vx, target, tuning.run_change_px_s(self.on_ground, speeding_up))
+        self.vx = approach(self.vx, target, run_change_px_s(tuning, self.on_ground, speeding_up))
         if direction:
             self.facing = direction
 
         # Jump timers: the buffer remembers a press, coyote time remembers the ground.
-        jump_held = JUMP in held
+        jump_held = Action.JUMP in held
         pressed = jump_held and not self._jump_was_held
         self._jump_was_held = jump_held
         self.jump_buffer_ticks_left = (tuning.jump_buffer_ticks + 1 if pressed
@@ -105,7 +111,7 @@ class Player(Body):
         self.invulnerable_ticks_left = max(0, self.invulnerable_ticks_left - 1)
 
         jumped = False
-        if pressed and DOWN in held and self.on_ground_one_way:
+        if pressed and Action.DOWN in held and self.on_ground_one_way:
             self.drop_ticks_left = DROP_THROUGH_TICKS
             self.jump_buffer_ticks_left = 0
         elif self.jump_buffer_ticks_left and self.coyote_ticks_left:
@@ -114,6 +120,7 @@ class Player(Body):
             self.rising_from_jump = True
             self.jump_buffer_ticks_left = self.coyote_ticks_left = 0
             jumped = True
+        self.dropping_through = self.drop_ticks_left > 0
 
         # Variable height: releasing jump while rising keeps only part of the speed.
         if self.rising_from_jump and (self.vy >= 0 or not jump_held):
@@ -130,8 +137,8 @@ class Player(Body):
         if x_move.hit is not None:
             self.vx = 0.0
         if y_move.hit is not None and (
-            (y_move.hit.side is BOTTOM and self.vy > 0)
-            or (y_move.hit.side is TOP and self.vy < 0)
+            (y_move.hit.side is Side.BOTTOM and self.vy > 0)
+            or (y_move.hit.side is Side.TOP and self.vy < 0)
         ):
             self.vy = 0.0
             self.rising_from_jump = False

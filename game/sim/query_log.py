@@ -5,7 +5,10 @@ Where it sits: outside the collision path. While the debug overlay is on
 :func:`logged_lookups`: each step's source is wrapped in a :class:`LoggedSource` that
 writes down what asked, the block of cells the lookup visited and the moving shapes it
 tested beside the tiles, and adds up the work, then answers exactly as the plain source
-does. The overlay draws the cells and shapes from this log (nothing else was tested).
+does. A body's move (:func:`game.collision.axis_sweep.move_body`) asks one source for its
+x pass, its y pass and its ground probe; :class:`LoggedMoves` tells them apart by the
+function that asked. The overlay draws the cells and shapes from this log (nothing else
+was tested).
 
 What it teaches: **instrument from outside.** The grid's query and the tick stay plain; the
 counting and the logging are a layer a reader can take away without touching either.
@@ -13,6 +16,7 @@ counting and the logging are a layer a reader can take away without touching eit
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from math import isfinite
@@ -75,19 +79,45 @@ class LoggedSource:
 
     def entries_in(self, left: float, top: float, right: float, bottom: float,
                    ) -> list[Entry]:
-        found = self.solids.entries_in(left, top, right, bottom)
-        if right > left and bottom > top and isfinite(left + top + right + bottom):
-            self._write_down(left, top, right, bottom)
-        return found
+        return self._written_down(self.purpose, left, top, right, bottom)
 
-    def _write_down(self, left: float, top: float, right: float, bottom: float) -> None:
-        """Log the cells the query visited and the platforms it tested; count the work."""
+    def _written_down(self, purpose: str, left: float, top: float, right: float,
+                      bottom: float) -> list[Entry]:
+        """Answer the query; log the cells it visited and the platforms it tested under
+        ``purpose``, and count the work."""
+        found = self.solids.entries_in(left, top, right, bottom)
+        if not (right > left and bottom > top and isfinite(left + top + right + bottom)):
+            return found
         solids, stats = self.solids, self.log.stats
         block = stats.count(solids.tiles, left, top, right, bottom) or NO_CELLS
         platforms = solids.platforms.tested_in(left, top, right, bottom, solids.without)
         stats.shapes_tested += len(platforms)
-        self.log.queries.append(Query(self.purpose, *block,
+        self.log.queries.append(Query(purpose, *block,
                                       extra=tuple(p.shape for p in platforms)))
+        return found
+
+
+# The part of a body's move that asks, by the name of its function, and the purpose its
+# lookups are written down under (the corner slide's moves count as the y pass).
+MOVE_PARTS = {"slide_past_ceiling_corner": "y sweep", "move_x": "x sweep",
+              "move_y": "y sweep", "ground_under": "ground probe"}
+
+
+@dataclass(frozen=True)
+class LoggedMoves(LoggedSource):
+    """The source of the bodies' moves, each lookup written down under the part of the move
+    that asked: the function calling this query, or the corner slide calling it."""
+
+    purpose: str = "moves"
+
+    def entries_in(self, left: float, top: float, right: float, bottom: float,
+                   ) -> list[Entry]:
+        asking = sys._getframe(1)  # move_x, move_y or ground_under
+        part = MOVE_PARTS.get(asking.f_code.co_name, self.purpose)
+        caller = asking.f_back  # move_body, or the corner slide
+        if caller is not None:
+            part = MOVE_PARTS.get(caller.f_code.co_name, part)
+        return self._written_down(part, left, top, right, bottom)
 
 
 def logged_lookups(solids: LevelSolids, log: QueryLog) -> Lookups:
@@ -99,9 +129,7 @@ def logged_lookups(solids: LevelSolids, log: QueryLog) -> Lookups:
         ledges=logged(solids, "ledge look-ahead"),
         platforms=[logged(solids.leaving_out(platform), "platforms")
                    for platform in solids.platforms.platforms],
-        x_sweep=logged(solids, "x sweep"),
-        y_sweep=logged(solids, "y sweep"),
-        ground_probe=logged(solids, "ground probe"),
+        moving_bodies=LoggedMoves(solids, log),
         hazards=logged(solids, "hazards"),
         checkpoint_spawn=logged(solids, "checkpoint spawn"),
         penetration=logged(solids, "penetration (measurement)"),

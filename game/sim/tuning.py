@@ -73,20 +73,6 @@ class Tuning:
     def jump_buffer_ticks(self) -> int:
         return round(self.jump_buffer_s / self.tick_s)
 
-    def run_change_px_s(self, on_ground: bool, speeding_up: bool) -> float:
-        """How much the run speed may change in one tick (px/s), from the times above.
-
-        Rates are derived from the run speed, so a level that sets ``run_speed`` very high
-        or very low keeps the same feel: full speed in the same number of ticks.
-        """
-        if on_ground:
-            seconds = self.run_accel_time_s if speeding_up else self.run_stop_time_s
-        else:
-            seconds = self.air_accel_time_s if speeding_up else self.air_stop_time_s
-        if seconds <= 0:
-            return float("inf")
-        return self.run_speed_px_s * self.tick_s / seconds
-
     def with_map_properties(self, properties: Mapping[str, object]) -> Tuning:
         """This tuning with a level's physics properties (px/s or px/s²) applied as given."""
         names = {

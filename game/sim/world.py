@@ -1,7 +1,8 @@
 """One level in play, and the tick that advances it by 1/60 s.
 
-Where it sits: the middle of the game. :meth:`World.step` is the whole update, in order,
-in one function; the campaign (:mod:`game.sim.campaign`) calls it once per tick. The
+Where it sits: the middle of the game. :meth:`World.step` is the whole update, in order: a
+table of contents of its phases, each a short method below it; the campaign
+(:mod:`game.sim.campaign`) calls it once per tick. The
 renderer (:mod:`game.app.render`) reads what it leaves behind and changes nothing of it but
 the sprites' pictures (each sprite's ``update``).
 
@@ -12,9 +13,10 @@ comments in :meth:`World.step` and the README's tour name the same steps in the 
 2. **Platforms**: each moving platform advances along its path, pushing the bodies in its way
    and carrying its riders through the same swept moves, so never into a wall (one whose
    route no body touches only advances; its box is worked out when next read).
-3. **x pass**: every body moves along x, swept against the level's solids, stopping flush.
-4. **y pass**: every body moves along y the same way and is placed; the floor it landed on,
-   or else the 1-pixel probe, sets ``on_ground``.
+3. **x pass**: each body moves along x, swept against the level's solids, stopping flush
+   (one call of :func:`~game.collision.axis_sweep.move_body` makes a body's steps 3 and 4).
+4. **y pass**: then along y the same way, and is placed; the floor it landed on, or else
+   the 1-pixel probe, sets ``on_ground``.
 5. **React**: bodies read what their moves hit (land, bump, turn round).
 6. **Pickups**: coins by ``groupcollide`` with ``dokill``, on the path the player travelled
    (only on a tick when that path reaches a cell that holds a trigger).
@@ -33,7 +35,7 @@ asks for it, the deepest overlap of any body with a solid is measured (it should
 
 Solids never go through ``groupcollide``: walls only meet bodies in the movement code.
 Each step asks the source of solids named for it in :class:`~game.sim.solids.Lookups`, and
-the moves of steps 3 and 4 are handed on (to the reactions, the probe, the triggers, and in
+the moves of steps 3 and 4 are handed on (to the reactions, the triggers, and in
 ``World.moves`` to the overlay), never left on the bodies to be read back.
 
 Two things a tick writes down beyond the game itself only when asked (:class:`Measure`):
@@ -46,6 +48,7 @@ what happens, and a tick nobody measures does neither.
 from __future__ import annotations
 
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from enum import Enum
 from types import MappingProxyType
@@ -53,20 +56,11 @@ from types import MappingProxyType
 import pygame
 
 from game.collision.aabb import Box
-from game.collision.axis_sweep import (
-    BOTTOM,
-    TOP,
-    Edges,
-    Move,
-    ground_under,
-    move_x,
-    move_y,
-    slide_past_ceiling_corner,
-)
+from game.collision.axis_sweep import BodyMoves, Edges, ground_under, move_body, move_x, move_y
 from game.collision.contacts import ContactTracker
 from game.collision.free_place import nearest_free_place, penetration_depth
-from game.collision.shapes import ShapeSource, TileKind
-from game.sim.body import Body, BodyMoves
+from game.collision.shapes import ShapeSource, TileKind, TileShape
+from game.sim.body import Body
 from game.sim.camera import Camera
 from game.sim.enemy import Enemy, EnemyKind, Squashed
 from game.sim.inputs import Actions
@@ -79,7 +73,6 @@ from game.sim.solids import LevelSolids, Lookups
 from game.sim.tuning import Tuning
 
 SQUASH_TICKS = 20  # how long a stomped enemy stays on screen, flattened
-SKY_LIMIT_PX = 1_000_000.0  # how far above the map a body may fly before the sky stops it
 
 
 ContactKey = tuple[str, int]  # ("player", 0), ("enemy", 3), ("exit", 0), ("hazard", cell)
@@ -195,98 +188,141 @@ class World:
         return [self.player, *self.enemies]
 
     def step(self, held: Actions) -> list[Event]:
-        """Advance the level by one tick of ``tuning.tick_s`` seconds."""
-        events: list[Event] = []
-        dt = self.tuning.tick_s
-        look = self._lookups()  # the source of solids each step asks
+        """Advance the level by one tick of ``tuning.tick_s`` seconds: the phases below, in
+        order, each a method of its own."""
+        lookups = self._lookups()  # the source of solids each step asks
         started = time.perf_counter()
-
-        if self.squashed:
-            for squash in self.squashed:  # a Group iterates over a copy: kill() is safe
-                squash.fade()
-
+        events: list[Event] = []
+        for squash in self.squashed:  # a stomped enemy's time on screen counts down
+            squash.fade()  # (a Group iterates over a copy: kill() is safe)
+        bodies = self.bodies()
+        before = {body: body.box for body in bodies}
         # 1. Intent: entities choose velocities; none of them moves itself.
-        enemies = list(self.enemies)
-        bodies: list[Body] = [self.player, *enemies]  # as bodies(): the order they move in
+        self._choose_velocities(held, lookups.ledges, events)
+        # 2. Platforms: each moves along its path, pushing and carrying bodies.
+        if self._platform_list:
+            self._move_platforms(bodies, lookups.platforms)
+        # 3. x pass: each body moves along x, stopping flush at the first solid face swept;
+        # 4. y pass: then along y from there, is placed, and finds the ground under its feet.
+        moves = self.moves = self._move_bodies(bodies, lookups.moving_bodies)
+        # 5. React: each body reads what its own moves hit.
+        for body, moved in moves.items():
+            body.react(moved.x, moved.y)
+        # 6. Pickups: the coins on the player's path, when it nears a trigger's cell.
+        path = moves[self.player]
+        edges = path.path_edges()
+        near_trigger = self.trigger_cells.reached_by(*edges)
+        if near_trigger:
+            self._collect_coins(path, events)
+        # 7. Contacts: what the player touches now; entering the exit, checkpoints.
+        touching = self._player_contacts(path, edges, near_trigger, lookups.hazards)
+        self._enter_contacts(touching, before[self.player], edges, lookups, events)
+        # 8. Enemies and hazards: a stomp from above; any other touch hurts.
+        hurt = bool(touching) and self._meet_enemies_and_hazards(touching, before, events)
+        # 9. The void and the crush: falling below the map or pushed into a wall.
+        self._lose_lives(hurt, events)
+        self._write_down(lookups, started)
+        # 10. Camera: follow the player, inside the map.
+        self.camera.follow(self.player.box, self.map_w_px, self.map_h_px)
+        return events
+
+    def _lookups(self) -> Lookups:
+        """The sources this tick asks: plain, or each wrapped to write its lookups in a
+        fresh :attr:`query_log` while ``measure.queries`` is on (the debug overlay). A log
+        left from a measured tick is emptied on the first tick nobody measures."""
+        if self.measure.queries or self.query_log.queries:
+            self.query_log.clear()
+        return self._logged if self.measure.queries else self._plain
+
+    def _choose_velocities(self, held: Actions, ledges: ShapeSource,
+                           events: list[Event]) -> None:
+        """Step 1: the player reads the held actions, the enemies look ahead for a ledge."""
         if self.player.decide(held, self.tuning):
             events.append(Event(EventKind.JUMP))
-        for enemy in enemies:
-            enemy.decide(look.ledges, self.tuning)
-        before: dict[Body, Box] = {}
-        for body in bodies:
-            before[body] = body.box
-            body.crushed = False
+        for enemy in self.enemies:
+            enemy.decide(ledges, self.tuning)
 
-        # 2. Platforms: each moves along its path, pushing what is in its way and carrying
-        #    what rides it, through the same swept moves (so never into a wall). Only the
-        #    platforms a body could meet push or carry; the others only advance.
+    def _move_platforms(self, bodies: list[Body], lookups: Sequence[ShapeSource]) -> None:
+        """Step 2: each platform moves along its path, pushing what is in its way and
+        carrying what rides it, through the same swept moves (so never into a wall). Only
+        the platforms a body could meet push or carry; the others only advance."""
+        for body in bodies:
+            body.crushed = False
+        dt = self.tuning.tick_s
         awake = self._platforms_near(bodies)
         for platform in self._platform_list:
             if platform in awake:
-                pushed = self._move_platform(platform, dt, bodies, look.platforms[platform.number])
+                pushed = self._move_platform(platform, dt, bodies, lookups[platform.number])
                 for body in pushed:
-                    awake |= self._platforms_near([body])  # moved into another's reach?
+                    awake |= self._platforms_near([body])  # moved into another's way?
             else:
                 platform.advance(dt)
 
-        # 3. x pass: move along x and stop flush at the first solid face swept.
-        x_sweep = look.x_sweep
-        x_moves = [move_x(x_sweep, body.box, body.vx * dt) for body in bodies]
+    def _move_bodies(self, bodies: list[Body], solids: ShapeSource) -> dict[Body, BodyMoves]:
+        """Steps 3 and 4: each body's move (:func:`move_body`: the x pass, then the y pass
+        with its corner slide, then the probe under the feet); the body is placed, once a
+        tick, and stands on what the move found."""
+        dt = self.tuning.tick_s
+        moves: dict[Body, BodyMoves] = {}
+        for body in bodies:
+            moved = moves[body] = move_body(
+                solids, body.box, body.vx * dt, body.vy * dt,
+                through_one_way=body.dropping_through, corner_px=body.corner_correction_px)
+            body.box = moved.y.box  # the drawn rect is derived from the box when read
+            self._stand(body, moved.ground)
+        return moves
 
-        # 4. y pass: the same along y from where the x pass stopped (a rise that clips a
-        #    ceiling's corner slides past it); the body is placed, once a tick, and the probe
-        #    looks one pixel below the feet.
-        moves = self.moves = {}
-        y_sweep, ground_probe = look.y_sweep, look.ground_probe
-        for body, x_move in zip(bodies, x_moves, strict=True):
-            both = moves[body] = self._move_y(body, x_move, body.vy * dt, y_sweep)
-            body.place(both.y.box)
-            self.probe_ground(body, both.y, ground_probe)
+    def probe_ground(self, body: Body) -> None:
+        """The one-pixel probe under the feet, away from a tick (a level start, a reload):
+        what the body stands (or rides) on, if anything."""
+        self._stand(body, ground_under(self.solids, body.box,
+                                       through_one_way=body.dropping_through))
 
-        # 5. React: each body reads what its own moves hit.
-        for body, (x_move, y_move) in moves.items():
-            body.react(x_move, y_move)
+    def _stand(self, body: Body, ground: TileShape | None) -> None:
+        """The body stands on ``ground`` (or is in the air), and rides it if it is a
+        platform's."""
+        body.standing_on = ground
+        body.on_ground = ground is not None
+        body.riding = (None if ground is None or ground.col != -1
+                       else self.platform_index.platform_of(ground))
 
-        # 6. Pickups: coins vanish from their group as they are collected. Triggers are
-        #    only tested on a tick whose path reaches a cell that holds one.
-        path = moves[self.player]
-        reach = path.reach()
-        near_trigger = self.trigger_cells.reached_by(*reach)
-        if near_trigger:
-            def on_path(_: Player, coin: Coin) -> bool:
-                return crossed(path, coin)
-            for coins in pygame.sprite.groupcollide(
-                    self.players, self.coins, False, True, collided=on_path).values():
-                events.extend(Event(EventKind.COIN, coin.value, coin.box) for coin in coins)
+    def _collect_coins(self, path: BodyMoves, events: list[Event]) -> None:
+        """Step 6: coins vanish from their group as the player's path crosses them."""
+        def on_path(_: Player, coin: Coin) -> bool:
+            return crossed(path, coin)
+        for coins in pygame.sprite.groupcollide(
+                self.players, self.coins, False, True, collided=on_path).values():
+            events.extend(Event(EventKind.COIN, coin.value, coin.box) for coin in coins)
 
-        # 7. Contacts: what the player touches now. The tracker reports only what changed,
-        #    so entering the exit is one event however long the player stands in it.
-        touching_now = self._player_contacts(path, reach, near_trigger, look.hazards)
-        changes = self.contacts.update(touching_now)
+    def _enter_contacts(self, touching: set[tuple[ContactKey, ContactKey]], was: Box,
+                        edges: Edges, lookups: Lookups, events: list[Event]) -> None:
+        """Step 7: the tracker reports only what changed, so entering the exit is one event
+        however long the player stands in it. A checkpoint counts the first time the player
+        touches it or passes over it (a jump over the flag counts; walking past below its
+        foot, or along a floor more than the flag's height above its top, does not): the
+        respawn point moves there, and never back to an earlier flag walked past again."""
+        changes = self.contacts.update(touching)
         entered = [key for pair in changes.started for key in pair]
-        if entered:
-            events.extend(Event(EventKind.EXIT) for kind, _ in entered if kind == "exit")
-        # A checkpoint counts the first time the player touches it or passes over it (a
-        # jump over the flag counts; walking past below its foot, or along a floor more than
-        # the flag's height above its top, does not): the respawn
-        # point moves there, and never back to an earlier flag walked past again.
+        events.extend(Event(EventKind.EXIT) for kind, _ in entered if kind == "exit")
         for number, flag in enumerate(self._checkpoint_list):
             if number in self.checkpoints_counted:
                 continue
             if (("checkpoint", number) in entered
-                    or self._passed_over(before[self.player], reach, flag.box)):
+                    or self._passed_over(was, edges, flag.box)):
                 self.checkpoints_counted.add(number)
-                self.spawn = self._checkpoint_spawn(number, look.checkpoint_spawn)
+                self.spawn = self._checkpoint_spawn(number, lookups.checkpoint_spawn)
                 self.checkpoint_reached = number
                 for flag_number, other in enumerate(self.checkpoints):
                     other.reached = flag_number == number
                 events.append(Event(EventKind.CHECKPOINT, number))
 
-        # 8. Enemies and hazards: landing on top is a stomp; any other touch hurts. Spikes
-        #    hurt for as long as they are touched (not only on contact), so standing in them
-        #    when the invulnerability runs out still costs a life.
+    def _meet_enemies_and_hazards(self, touching: set[tuple[ContactKey, ContactKey]],
+                                  before: dict[Body, Box], events: list[Event]) -> bool:
+        """Step 8: landing on top is a stomp; any other touch hurts. Spikes hurt for as long
+        as they are touched (not only on contact), so standing in them when the
+        invulnerability runs out still costs a life. True when the player is hurt."""
         hurt = False
-        for _, (kind, number) in sorted(touching_now):
+        for _, (kind, number) in sorted(touching):
             if kind == "enemy":
                 enemy = self.enemy_by_number[number]
                 if self._came_from_above(before[self.player], before[enemy]):
@@ -298,65 +334,39 @@ class World:
                     hurt = True
             elif kind == "hazard" and not self.player.invulnerable:
                 hurt = True
+        return hurt
 
-        # 9. The void and the crush: falling below the map, or being pushed into a wall by a
-        #    platform, costs a life (and removes an enemy). A respawn leaves no path behind.
+    def _lose_lives(self, hurt: bool, events: list[Event]) -> None:
+        """Step 9: falling below the map, or being pushed into a wall by a platform, costs a
+        life (and removes an enemy). A respawn leaves no path behind."""
         if self.player.box.y >= self.map_h_px or self.player.crushed:
             hurt = True
-        for enemy in enemies:  # a stomped one is out of play already: kill() does nothing
+        for enemy in self.enemies:  # a stomped one is out of play already
             if enemy.box.y >= self.map_h_px or enemy.crushed:
                 enemy.kill()
         if hurt and not any(e.kind is EventKind.EXIT for e in events):
             events.append(Event(EventKind.HURT, 1, self.player.box))
             self.player.respawn(self.spawn, self.tuning.invulnerable_ticks)
-            del moves[self.player]
+            del self.moves[self.player]
 
+    def _write_down(self, lookups: Lookups, started: float) -> None:
+        """After step 9: what the tick cost, and, when a report asks for it, the deepest
+        overlap of any body with a solid (it should stay 0; its lookups are left out of
+        the stats)."""
         counted = self.query_log.stats  # the work of the lookups, when they are written down
         self.stats = TickStats(counted.cells_visited, counted.shapes_tested,
                                time.perf_counter() - started)
-        # Measurement only, when asked: how deep does any body sit in a solid after
-        # resolution? (Its lookups are left out of the stats above.)
         if self.measure.penetration:
             for body in self.bodies():
                 self.max_penetration_px = max(self.max_penetration_px,
-                                              penetration_depth(look.penetration, body.box))
+                                              penetration_depth(lookups.penetration, body.box))
 
-        # 10. Camera: follow the player, inside the map.
-        self.camera.follow(self.player.box, self.map_w_px, self.map_h_px)
-        return events
-
-    def _lookups(self) -> Lookups:
-        """The sources this tick asks: plain, or each wrapped to write its lookups in a
-        fresh :attr:`query_log` while ``measure.queries`` is on (the debug overlay)."""
-        self.query_log.clear()
-        return self._logged if self.measure.queries else self._plain
-
-    def probe_ground(self, body: Body, y_move: Move | None = None,
-                     solids: ShapeSource | None = None) -> None:
-        """The one-pixel probe under the feet: what the body stands (or rides) on, if anything.
-
-        A y move (``y_move``) that ended with the feet exactly on a floor has found it
-        already: the shape it hit is the one the probe would find first. So the probe only
-        runs when it did not.
-        """
-        landed = y_move.hit if y_move is not None else None
-        _, y, _, h = body.box
-        if landed is not None and landed.side is BOTTOM and landed.face == y + h:  # the feet
-            standing_on = landed.shape
-        else:
-            standing_on = ground_under(solids or self.solids, body.box,
-                                       through_one_way=body.dropping_through)
-        body.standing_on = standing_on
-        body.on_ground = standing_on is not None
-        body.riding = (None if standing_on is None or standing_on.col != -1
-                       else self.platform_index.platform_of(standing_on))
-
-    def _player_contacts(self, path: BodyMoves, reach: Edges, near_trigger: bool,
+    def _player_contacts(self, path: BodyMoves, edges: Edges, near_trigger: bool,
                          hazards: ShapeSource) -> set[tuple[ContactKey, ContactKey]]:
         """The pairs (player, thing) whose boxes the player's ``path`` overlapped this tick.
 
-        ``reach`` bounds the whole path: an enemy outside it is not tested further, and the
-        spikes are looked up (in ``hazards``) only when it reaches a cell that holds one;
+        ``edges`` bound the whole path: an enemy outside them is not tested further, and the
+        spikes are looked up (in ``hazards``) only when they reach a cell that holds one;
         exits and checkpoints are tested only when the path is ``near_trigger``.
         """
         pairs: set[tuple[ContactKey, ContactKey]] = set()
@@ -365,37 +375,20 @@ class World:
                       if crossed(path, goal)}
             pairs |= {(PLAYER_KEY, ("checkpoint", number))
                       for number, flag in enumerate(self.checkpoints) if crossed(path, flag)}
-        left, top, right, bottom = reach
+        left, top, right, bottom = edges
         for number, enemy in self.enemy_by_number.items():
             x, y, w, h = enemy.box
             if (x < right and left < x + w and y < bottom and top < y + h and enemy.alive()
                     and crossed(path, enemy)):
                 pairs.add((PLAYER_KEY, ("enemy", number)))
-        if not self.hazard_cells.reached_by(*reach):
+        if not self.hazard_cells.reached_by(*edges):
             return pairs  # no spike anywhere near the path
-        cols, hazard = self.grid.cols, TileKind.HAZARD
-        for move in path:
+        cols = self.grid.cols
+        for move in (path.x, path.y):
             pairs |= {(PLAYER_KEY, ("hazard", entry.shape.row * cols + entry.shape.col))
                       for entry in hazards.entries_in(*move.path_edges)
-                      if entry.kind is hazard}
+                      if entry.kind is TileKind.HAZARD}
         return pairs
-
-    def _move_y(self, body: Body, x_move: Move, dy: float, solids: ShapeSource) -> BodyMoves:
-        """The y pass for one body from where its x move ended, with corner correction for a
-        rise that clips a ceiling (the slide sideways joins the x move)."""
-        box = x_move.box
-        move = move_y(solids, box, dy, through_one_way=body.dropping_through)
-        if move.hit is not None and move.hit.side is TOP and body.corner_correction_px:
-            slid = slide_past_ceiling_corner(solids, box, dy, body.corner_correction_px)
-            if slid is not None:
-                x_move, move = x_move.followed_by(slid.side), slid.rise
-        # Below the map is the void (a lost life) and far above it the sky ends, so a body
-        # flung at any speed keeps coordinates that a Rect can hold.
-        x, y, w, h = move.box
-        if not -SKY_LIMIT_PX <= y <= self.map_h_px:
-            y = min(max(y, -SKY_LIMIT_PX), float(self.map_h_px))
-            move = Move(Box(x, y, w, h), move.hit, move.start, move.dx, move.dy)
-        return BodyMoves(x_move, move)
 
     def _platforms_near(self, bodies: list[Body]) -> set[Platform]:
         """The platforms a body could meet this tick: those whose route region it touches,
