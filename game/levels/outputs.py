@@ -189,7 +189,9 @@ def unwritable(path: Path, what: str) -> str | None:
             reason = refused
     except (OSError, ValueError):
         return None  # a name the system refuses: the write will say so
-    return f"{_named(path)}: {what} cannot be written ({reason}) — check the path"
+    fix = ("give it another name" if reason == "it is a file this run reads"
+           else "check the path")
+    return f"{_named(path)}: {what} cannot be written ({reason}) — {fix}"
 
 
 def write_output(path: Path, write: Callable[[Path], object], what: str,
