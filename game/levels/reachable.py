@@ -14,8 +14,16 @@ allows and never less:
 * **Launches.** Wherever the feet can rest (the top of any Solid or OneWay shape, any point
   of a moving platform's path, and an enemy's head, which gives a jump after a stomp) the
   player may jump. The rise allowed there is the highest a jump rises *in the game's own
-  tick* (:func:`jump_rise`), a little more for a platform's lift, plus an enemy's height and
-  hop where enemies are.
+  tick* (:func:`jump_rise`), or a stomp's bounce where that is faster, a little more for a
+  platform's lift, plus an enemy's height and hop where enemies are.
+* **Carried and pushed.** A moving platform carries a body on its top and pushes one at its
+  sides or underside, so every cell the feet of a body touching its box can be in, anywhere
+  along its path, is one group: reaching one reaches all, and each is a launch (a body
+  carried or pushed there may leave it jumping or falling).
+* **Stomps anywhere.** An enemy goes its own way whatever the player does (only a stomp
+  ends it), so where its head can be is worked out once by a fill of the enemy's own
+  (:func:`enemy_heads`: its body, its fastest speed, its hop, carried and pushed by the
+  platforms) and every place in it is a launch.
 * **The jump envelope.** After ``k`` ticks in the air (counting the coyote ticks before the
   jump) the feet are at most ``k`` ticks of full run speed to either side, and no higher than
   the best jump has risen by then. Every cell a jump could pass through, walls ignored for
@@ -25,7 +33,12 @@ allows and never less:
   enough that each row down allows at most a bounded sideways step; the fill carries on
   downward with that rule, and any place the feet can rest starts a new launch.
 * **Respawns.** A checkpoint whose column the reached region crosses adds its respawn place
-  as a new start.
+  as a new start. The game works that place out when the flag counts, with the platforms
+  where they are then; a flag a platform's route crosses over its foot may put the player
+  elsewhere, which no rule here bounds: the fill says so (:attr:`Reach.unbounded`), and an
+  Exit it misses then proves nothing.
+* **Lives.** Spikes and enemies never stop the fill, and a lost life only sends the player
+  to a start above, so lives never widen it.
 
 Each rule only ever lets the point go further than the game would, so if an Exit's cells
 are never reached, the map cannot be won. The converse does not hold: a reached Exit proves
@@ -37,7 +50,10 @@ up and proves nothing (:func:`reachable` gives None, as for physics with no boun
 biggest map the game reads, with floors everywhere, the fill would otherwise take minutes.
 
 Two questions, from cheap to sharp: :func:`open_path` (is there any open way at all, gravity
-ignored?) and :func:`reachable` (is the Exit inside the jump envelope's fill?).
+ignored?) and :func:`reachable` (is the Exit inside the jump envelope's fill?). Asked
+``narrow``, :func:`reachable` rides platforms' tops only and stomps enemies only where they
+start: a cheaper fill and a tighter guide for the search, which proves nothing, but where it
+reaches an Exit the full fill does too.
 """
 
 from __future__ import annotations
