@@ -624,7 +624,7 @@ def enemy_heads(world: World, work: FillWork) -> list[tuple[float, float, float]
         kinds.setdefault(kind, []).append(enemy.box)
         speed = tuning.enemy_speed_px_s if enemy.speed_px_s is None else enemy.speed_px_s
         speeds[kind] = max(speeds.get(kind, 0.0), abs(speed))
-    heads: list[tuple[float, float, float]] = []
+    heads = [(e.box.left, e.box.right, e.box.top) for e in level.enemies]  # as they start
     for (hopper, w, h), boxes in kinds.items():
         own = replace(tuning, run_speed_px_s=speeds[(hopper, w, h)],
                       jump_speed_px_s=tuning.hopper_jump_speed_px_s if hopper else 0.0)
