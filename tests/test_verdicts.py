@@ -607,3 +607,17 @@ def test_a_search_counts_every_life_a_crush_takes_within_one_move() -> None:
     level = respawn_on_a_crusher()
     solution = solve(level, EFFORT, {})
     assert not solution.found or replay(level.path, solution.held, level)[0]
+
+
+def test_a_sealed_cave_with_a_respawn_a_platform_may_move_is_not_called_impossible() -> None:
+    """Walls alone do not bound a respawn a platform moves (the nearest free place may be
+    on the far side of a wall), so the closed-path proof says nothing either."""
+    flag = Box(64, FLOOR - 32, 16, 32)
+    lift = PlatformSpec(Route(((56, FLOOR - 48), (56, FLOOR - 8))), 32.0, 8.0, 40.0)
+    cave = sealed_cave()
+    level = level_from_boxes(COLS, ROWS, [shape.box for shape in cave.grid.shapes()], SPAWN,
+                             list(cave.exits), platforms=(lift,), checkpoints=(flag,))
+    verdict = judge(level, Effort(budget=500))
+    assert verdict.kind is Kind.UNDECIDED
+    assert "does not cover a respawn moved by a moving Platform" in verdict.finding
+    assert judge(cave, EFFORT).kind is Kind.IMPOSSIBLE

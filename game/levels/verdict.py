@@ -65,7 +65,7 @@ def prove_impossible(level: Level) -> tuple[Verdict | None, Reach | None]:
     if not level.exits:
         return None, None
     sealed = open_path(world)
-    if not sealed.touches_exit:
+    if not sealed.touches_exit and not sealed.unbounded:  # (a moved respawn may be anywhere)
         culprit = _closing_layer(world)
         blame = (f"; without the Solid tiles of layer '{culprit}' there would be a way"
                  if culprit is not None else "")
@@ -77,7 +77,7 @@ def prove_impossible(level: Level) -> tuple[Verdict | None, Reach | None]:
                        f"close every way{blame}; this is the nearest open place to an Exit",
                        fix, reach=sealed), None
     guide = reachable(world, narrow=True)  # cheaper, and the tighter guide for a search
-    if guide is not None and guide.touches_exit:
+    if guide is None or guide.touches_exit:  # (no bound, or past its budget: so is the full)
         return None, guide
     reach = reachable(world)
     if reach is not None and not reach.touches_exit and not reach.unbounded:
