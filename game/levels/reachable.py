@@ -546,9 +546,16 @@ def steps_to_exit(world: World) -> dict[Cell, int] | None:
     """For every cell the fill reached, the fewest of its steps (cell to cell, as the fill
     moved) to a cell where the player touches an Exit; a cell from which no step leads
     there is left out. None when the tuning gives no bound. A guide for the search: a place
-    left out is one from which, by the proof above, no route can go on to an Exit."""
+    left out is one from which, by the proof above, no route can go on to an Exit. The
+    narrow fill's steps when it reaches an Exit (they lead more tightly); the full fill's
+    otherwise, and none (empty) when it met a mechanic it does not bound."""
+    guide = reachable(world, narrow=True)
+    if guide is None or guide.touches_exit:
+        return None if guide is None else guide.steps
     reach = reachable(world)
-    return None if reach is None else reach.steps
+    if reach is None:
+        return None
+    return {} if reach.unbounded and not reach.touches_exit else reach.steps
 
 
 def _steps_back(fill: _JumpFill, reach: Reach) -> dict[Cell, int]:
