@@ -20,7 +20,7 @@ import pytest
 from game.collision.aabb import Box
 from game.levels.__main__ import EXIT_UNDECIDED, main
 from game.levels.reach import DEFAULT_LIMITS, jump_path
-from game.levels.reachable import jump_rise, open_path, reachable
+from game.levels.reachable import jump_rise, open_path, reachable, starts
 from game.levels.solver import Effort, replay, solve
 from game.levels.verdict import Kind, Verdict, judge
 from game.sim.campaign import Campaign, Outcome
@@ -566,22 +566,47 @@ def test_the_crusher_moves_the_respawn_only_when_the_flag_counts_under_it() -> N
     assert len(lost_on) == TUNING.start_lives and lost_on[-1] - lost_on[0] == 2
 
 
-def test_a_respawn_a_platform_may_move_leaves_a_map_the_fill_cannot_cross_not_decided(
-) -> None:
-    """A pit of 7 tiles (proven impossible on its own) with a Checkpoint before it that a
-    lift passes over: where the flag puts the player depends on where the lift is when it
-    counts, which the proof does not bound, so it says so instead of calling it impossible."""
-    flag = Box(64, FLOOR - 32, 16, 32)
-    lift = PlatformSpec(Route(((56, FLOOR - 48), (56, FLOOR - 8))), 32.0, 8.0, 40.0)
-    plain = gap(112)
-    level = level_from_boxes(COLS, ROWS, [Box(0, FLOOR, EDGE, 64),
-                                          Box(EDGE + 112, FLOOR, WIDTH - EDGE - 112, 64)],
-                             SPAWN, list(plain.exits), platforms=(lift,), checkpoints=(flag,))
-    verdict = judge(level, Effort(budget=500))
+FLAG_BY_THE_LIFT = Box(64, FLOOR - 32, 16, 32)
+LIFT = PlatformSpec(Route(((56, FLOOR - 48), (56, FLOOR - 8))), 32.0, 8.0, 40.0)
+
+
+def pit_with_a_lift_over_a_flag() -> Level:
+    """A pit of 7 tiles (proven impossible on its own), with a Checkpoint near the spawn
+    that a lift comes down over: where the flag puts the player depends on where the lift is
+    when it counts."""
+    return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, EDGE, 64),
+                                         Box(EDGE + 112, FLOOR, WIDTH - EDGE - 112, 64)],
+                            SPAWN, list(gap(112).exits), platforms=(LIFT,),
+                            checkpoints=(FLAG_BY_THE_LIFT,))
+
+
+def test_every_respawn_the_game_puts_under_a_lift_lies_in_the_bound_the_proof_uses() -> None:
+    """The game's own respawn for the flag, counted on each tick of the lift's round trip
+    and more, is inside the range the proof starts the player from."""
+    level = pit_with_a_lift_over_a_flag()
+    (_, start) = starts(World(level))
+    assert start.moved is not None
+    world = World(level)
+    seen = set()
+    for _ in range(300):
+        world.step(frozenset())
+        place = world._checkpoint_spawn(0, world.solids)
+        seen.add((place.x, place.y))
+        assert start.moved.left <= place.x <= start.moved.right, place
+        assert start.moved.top <= place.y <= start.moved.bottom, place
+    assert len(seen) > 10  # the lift moves it about
+
+
+def test_a_respawn_a_platform_may_move_without_a_bound_leaves_the_map_not_decided(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """Where no bound is found for where the flag may put the player, the proof says so
+    instead of calling the map impossible."""
+    monkeypatch.setattr("game.levels.reachable.moved_respawns", lambda *_: None)
+    verdict = judge(pit_with_a_lift_over_a_flag(), Effort(budget=500))
     assert verdict.kind is Kind.UNDECIDED
     assert "the proof of impossibility does not cover a respawn moved by a moving Platform " \
         "(the Checkpoint at tile (4,8)" in verdict.finding
-    assert judge(plain, EFFORT).kind is Kind.IMPOSSIBLE
+    assert judge(gap(112), EFFORT).kind is Kind.IMPOSSIBLE
 
 
 WON_THROUGH_A_MECHANIC = ("pit crossed pushed by a moving wall",
@@ -607,17 +632,3 @@ def test_a_search_counts_every_life_a_crush_takes_within_one_move() -> None:
     level = respawn_on_a_crusher()
     solution = solve(level, EFFORT, {})
     assert not solution.found or replay(level.path, solution.held, level)[0]
-
-
-def test_a_sealed_cave_with_a_respawn_a_platform_may_move_is_not_called_impossible() -> None:
-    """Walls alone do not bound a respawn a platform moves (the nearest free place may be
-    on the far side of a wall), so the closed-path proof says nothing either."""
-    flag = Box(64, FLOOR - 32, 16, 32)
-    lift = PlatformSpec(Route(((56, FLOOR - 48), (56, FLOOR - 8))), 32.0, 8.0, 40.0)
-    cave = sealed_cave()
-    level = level_from_boxes(COLS, ROWS, [shape.box for shape in cave.grid.shapes()], SPAWN,
-                             list(cave.exits), platforms=(lift,), checkpoints=(flag,))
-    verdict = judge(level, Effort(budget=500))
-    assert verdict.kind is Kind.UNDECIDED
-    assert "does not cover a respawn moved by a moving Platform" in verdict.finding
-    assert judge(cave, EFFORT).kind is Kind.IMPOSSIBLE

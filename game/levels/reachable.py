@@ -35,8 +35,9 @@ allows and never less:
 * **Respawns.** A checkpoint whose column the reached region crosses adds its respawn place
   as a new start. The game works that place out when the flag counts, with the platforms
   where they are then; a flag a platform's route crosses over its foot may put the player
-  elsewhere, which no rule here bounds: the fill says so (:attr:`Reach.unbounded`), and an
-  Exit it misses then proves nothing.
+  elsewhere, anywhere within the range :func:`moved_respawns` gives, and the fill starts
+  from all of it. Where no range is found, the fill says so (:attr:`Reach.unbounded`), and
+  an Exit it misses then proves nothing.
 * **Lives.** Spikes and enemies never stop the fill, and a lost life only sends the player
   to a start above, so lives never widen it.
 
@@ -231,13 +232,16 @@ class Start:
     columns: frozenset[int]  # empty: the spawn, counted from the start
     # what the fill cannot bound about this start, said when it counts (else None)
     unbounded: str | None = None
+    # where a platform may move the respawn to: the range of its top-left corner (else None)
+    moved: Box | None = None
 
 
 def starts(world: World) -> list[Start]:
     """The spawn, then each checkpoint's respawn place, found as the world finds it with the
     tiles alone. A flag some moving platform's route overlaps where the player comes back
     may be counted while the platform fills that place, and the respawn is then moved to
-    wherever is free: the start says so (:attr:`Start.unbounded`)."""
+    wherever is free: the start gives the range it may be moved in (:attr:`Start.moved`),
+    or says that none was found (:attr:`Start.unbounded`)."""
     level, grid = world.level, world.level.grid
     found = [Start(world.spawn, frozenset())]
     w, h = level.spawn.w, level.spawn.h
@@ -246,13 +250,50 @@ def starts(world: World) -> list[Start]:
         place = nearest_free_place(grid, standing)
         first = math.floor((flag.left - w) / grid.tile_w)
         last = math.floor((flag.right + w) / grid.tile_w)
-        moved = any(route_region(spec).overlaps(standing) for spec in level.platforms)
+        columns = frozenset(range(first, last + 1))
+        regions = [route_region(spec) for spec in level.platforms]
+        if not any(region.overlaps(standing) for region in regions):
+            found.append(Start(place, columns))
+            continue
+        area = moved_respawns(grid, standing, regions, max(
+            [max(spec.width_px, spec.height_px) for spec in level.platforms]))
         col, row = math.floor(flag.x / grid.tile_w), math.floor(flag.y / grid.tile_h)
-        found.append(Start(place, frozenset(range(first, last + 1)),
+        found.append(Start(place, columns, None if area is not None else
                            f"a respawn moved by a moving Platform (the Checkpoint at tile "
                            f"({col},{row}) may be counted while a Platform fills the place "
-                           "the player comes back to)" if moved else None))
+                           "the player comes back to)", area))
     return found
+
+
+def moved_respawns(grid: TileGrid, standing: Box, regions: list[Box],
+                   platform_px: float) -> Box | None:
+    """The range of top-left corners where the game may put a player coming back to a flag
+    whose place (``standing``) some platforms' routes cross (``regions``, each route's box
+    grown by its platform's size; ``platform_px``: the longest side of a platform), or
+    None if no bound is found.
+
+    The game (:func:`~game.collision.free_place.nearest_free_place`, with the platforms
+    where they are when the flag counts) widens its window round the place until some
+    candidate in it is free, each coordinate where it was or flush with a face of a wall
+    touching the window. Once the window holds a candidate of the tiles' faces alone that is
+    free of the tiles and of every route, it is free wherever the platforms are: the game
+    stops there or sooner, with each coordinate within the window, a wall's size and the
+    body's own size of where it was."""
+    w, h = standing.w, standing.h
+    search, limit = 64.0, max(grid.width_px, grid.height_px) + w + h  # as the game's
+    while search <= 2 * limit:
+        window = Box(standing.x - search, standing.y - search, w + 2 * search, h + 2 * search)
+        tiles = [s.box for s in grid.shapes_in(window) if s.kind is TileKind.SOLID]
+        xs = {standing.x} | {b.left - w for b in tiles} | {b.right for b in tiles}
+        ys = {standing.y} | {b.top - h for b in tiles} | {b.bottom for b in tiles}
+        around = Box(window.x - w, window.y - h, window.w + 2 * w, window.h + 2 * h)
+        walls = [*regions, *(s.box for s in grid.shapes_in(around) if s.kind is TileKind.SOLID)]
+        if any(not any(Box(x, y, w, h).overlaps(b) for b in walls) for x in xs for y in ys):
+            reach_x = search + max(platform_px, grid.tile_w) + w
+            reach_y = search + max(platform_px, grid.tile_h) + h
+            return Box(standing.x - reach_x, standing.y - reach_y, 2 * reach_x, 2 * reach_y)
+        search *= 2
+    return None
 
 
 @dataclass
@@ -298,6 +339,8 @@ def _flood(world: World, fill: _Fill) -> Reach:
             fill.seed(start.box, _standing(world, start.box))
             if start.unbounded is not None:
                 unbounded.append(start.unbounded)
+            if start.moved is not None:
+                fill.seed_anywhere(start.moved, world.spawn)
     targets = {cell for cell in target_cells(world.level, world.spawn) if fill.open(cell)}
     return Reach(reached, bool(reached & targets), targets, unbounded=unbounded)
 
@@ -326,6 +369,24 @@ class _Fill:
         if cell not in self.seen:
             self.seen.add(cell)
             self.queue.append(cell)
+
+    def cells_of(self, corners: Box, body: Box) -> Iterator[Cell]:
+        """The open cells the middle of the feet is in for a body whose top-left corner is
+        anywhere in ``corners``."""
+        grid = self.grid
+        first = _feet_cell(grid, corners.left + body.w / 2, corners.top + body.h)
+        last = _feet_cell(grid, corners.right + body.w / 2, corners.bottom + body.h)
+        for col in range(first[0], last[0] + 1):
+            for row in range(first[1], last[1] + 1):
+                if self.open((col, row)):
+                    yield col, row
+
+    def seed_anywhere(self, corners: Box, body: Box) -> None:
+        """Start from anywhere a body whose top-left corner is in ``corners`` can be."""
+        for cell in self.cells_of(corners, body):
+            if cell not in self.seen:
+                self.seen.add(cell)
+                self.queue.append(cell)
 
     def run(self) -> set[Cell]:
         while self.queue:
@@ -438,6 +499,17 @@ class _JumpFill(_Fill):
             self.queue.append(cell)
         else:
             self._arc(cell, box.bottom, max_rise=0.0)
+
+    def seed_anywhere(self, corners: Box, body: Box) -> None:
+        """Start from anywhere a body whose top-left corner is in ``corners`` can be: a
+        jump from each of those cells, from its top (more than a fall from rest allows)."""
+        for cell in self.cells_of(corners, body):
+            self.work.spend(1)
+            self.launch_y[cell] = min(self.launch_y.get(cell, math.inf),
+                                      cell[1] * self.grid.tile_h)
+            self.launched.discard(cell)
+            self._reach_cell(cell)
+            self.queue.append(cell)
 
     def _reach_cell(self, cell: Cell) -> None:
         if cell not in self.seen:
