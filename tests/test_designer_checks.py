@@ -17,7 +17,9 @@ import pytest
 from game.collision.shapes import TileKind
 from game.levels import LEVELS_DIR, load_level
 from game.levels.checking import Finding, Options, check_map
+from game.levels.solver import Effort, solve
 from game.levels.tiledata import FLIPPED_D, FLIPPED_V
+from game.levels.verdict import Kind
 from tests.maps import write_tmx
 
 OPEN = ["                ",
@@ -50,15 +52,86 @@ def found(path: Path, words: str) -> list[Finding]:
     return [f for f in check_map(path, NO_SEARCH).findings if words in f.text]
 
 
-def test_a_checkpoint_drawn_into_the_ground_is_an_error_at_the_flag(tmp_path: Path) -> None:
-    """The finding names the flag, so Tiled's Issues panel selects the flag, not a tile."""
+def test_a_checkpoint_drawn_into_the_ground_is_a_warning_at_the_flag(tmp_path: Path) -> None:
+    """The finding names the flag, so Tiled's Issues panel selects the flag, not a tile. The
+    game plays the map (the player comes back at the nearest free place): it is playable."""
     path = write_tmx(tmp_path, OPEN, extra_objects='<object id="9" name="cave" '
                      'type="Checkpoint" x="96" y="40" width="16" height="16"/>')
     (finding,) = found(path, "Checkpoint")
-    assert ": object #9 'cave': a player coming back to this Checkpoint would stand inside" \
-        in finding.text
-    assert finding.severity == "error"
+    assert ": object #9 'cave': warning: a player coming back to this Checkpoint would stand " \
+        "inside" in finding.text
+    assert finding.severity == "warning"
     assert finding.as_json()["object_id"] == 9
+    assert not check_map(path, NO_SEARCH).bad
+
+
+# A block one tile high in the way, jumped over on the way to the Exit.
+BLOCKED = ["                ",
+           "                ",
+           " P      #    D  ",
+           "################"]
+THIN_POLE = ('<object id="9" name="pole" type="Checkpoint" x="145" y="16" width="4" '
+             'height="32"/>')  # its respawn, 12 px wide round the pole, overlaps the block 3 px
+
+
+def recorded_win(path: Path, folder: Path) -> Path:
+    """A win of the map at ``path`` written as an input script (as --record writes one)."""
+    solution = solve(load_level(path), Effort(budget=20_000))
+    assert solution.found
+    script = folder / "win.txt"
+    script.write_text(solution.script(), encoding="utf-8")
+    return script
+
+
+def test_a_thin_pole_whose_respawn_a_block_moves_3_px_is_a_warning_a_recorded_win_overrules(
+        tmp_path: Path) -> None:
+    path = write_tmx(tmp_path, BLOCKED, extra_objects=THIN_POLE)
+    report = check_map(path, Options(proof=recorded_win(path, tmp_path)))
+    (finding,) = [f for f in report.findings if "would stand inside Solid tiles" in f.text]
+    assert finding.severity == "warning" and finding.object_id == 9
+    assert "(144, 34) instead of (141, 34)" in finding.text
+    assert not report.bad and report.verdict is Kind.SOLVED
+
+
+def lift(points: str, width: int = 32, height: int = 8) -> str:
+    """A Platform object (id 5, 'lift') whose polyline starts at (0, 0) and goes on by
+    ``points`` (relative, as Tiled writes them)."""
+    return (f'<object id="5" name="lift" type="Platform" x="88" y="36"><properties>'
+            f'<property name="width" type="float" value="{width}"/><property name="height" '
+            f'type="float" value="{height}"/></properties><polyline points="0,0 {points}"/>'
+            '</object>')
+
+
+def test_a_respawn_a_lift_fills_at_the_start_is_playable_and_named_as_on_its_path(
+        tmp_path: Path) -> None:
+    """The lift starts in the place over the flag's foot and rises out of it: the game
+    plays the map (the respawn is worked out when the flag counts), so it is a warning that
+    names the danger, at the flag, and a recorded win proves the map."""
+    path = write_tmx(tmp_path, OPEN, extra_objects='<object id="9" name="flag" '
+                     'type="Checkpoint" x="96" y="16" width="16" height="32"/>'
+                     + lift("0,-36"))
+    report = check_map(path, Options(proof=recorded_win(path, tmp_path)))
+    assert not report.bad and report.verdict is Kind.SOLVED
+    (finding,) = [f for f in report.findings if "on the path of the moving Platform" in f.text]
+    assert finding.severity == "warning" and (finding.object_id, finding.tile) == (9, (6, 2))
+    assert "object #9 'flag': warning: a player coming back to this Checkpoint stands at tile " \
+        "(6,2), on the path of the moving Platform (object #5 'lift')" in finding.text
+
+
+def test_a_respawn_under_a_crusher_is_named_and_one_off_its_path_is_not(
+        tmp_path: Path) -> None:
+    """A crusher that comes down onto the floor over the flag's foot: a player coming back
+    there while it does is crushed again at once, every life in a few ticks."""
+    flag = ('<object id="9" name="flag" type="Checkpoint" x="96" y="16" width="16" '
+            'height="32"/>')
+    crusher = lift("0,4", width=32, height=8).replace('y="36"', 'y="0"').replace(
+        "0,0 0,4", "0,0 0,32")
+    path = write_tmx(tmp_path, OPEN, extra_objects=flag + crusher)
+    (finding,) = found(path, "on the path of the moving Platform")
+    assert finding.object_id == 9 and finding.tile == (6, 2)
+    clear = write_tmx(tmp_path, OPEN, "clear.tmx", extra_objects=flag + crusher.replace(
+        'x="88"', 'x="150"'))
+    assert not found(clear, "on the path of the moving Platform")
 
 
 def test_a_checkpoint_standing_on_the_ground_is_fine(tmp_path: Path) -> None:

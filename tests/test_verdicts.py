@@ -20,8 +20,8 @@ import pytest
 from game.collision.aabb import Box
 from game.levels.__main__ import EXIT_UNDECIDED, main
 from game.levels.reach import DEFAULT_LIMITS, jump_path
-from game.levels.reachable import jump_rise, open_path, reachable
-from game.levels.solver import Effort, replay
+from game.levels.reachable import jump_rise, open_path, reachable, starts
+from game.levels.solver import Effort, replay, solve
 from game.levels.verdict import Kind, Verdict, judge
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, Actions
@@ -236,6 +236,73 @@ def play(level: Level, script: Script, asked: tuple[int, ...] = (),
                   tuple(airborne.get(tick, False) for tick in asked))
 
 
+# Maps won through a mechanic the proof of impossibility must bound: a push by a moving
+# Platform's side, a stomp on an enemy far from where it starts, a respawn a Platform moves.
+PUSHED_PIT_PX = 128  # wider than any jump: a gap of 7 tiles is proven impossible
+WALL_SPEED_PX_S = 240.0  # faster than the player runs: 4 px a tick
+
+
+def pushed_across_by_a_wall(wall: bool = True) -> Level:
+    """A pit 8 tiles wide, and a wall 16 px wide and 80 px tall (a Platform) sliding right
+    along the floor from the map's left edge to the pit's far side, faster than the player
+    runs. Standing in its way, the player is pushed to the pit; jumping there, it stays in
+    front of the wall, which carries it across. No jump rises onto the wall's top."""
+    far = EDGE + PUSHED_PIT_PX
+    platforms = (PlatformSpec(Route(((0, FLOOR - 80), (far - 16, FLOOR - 80))), 16.0, 80.0,
+                              WALL_SPEED_PX_S),) if wall else ()
+    return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, EDGE, 64),
+                                         Box(far, FLOOR, WIDTH - far, 64)],
+                            SPAWN, [exit_on(FLOOR)], platforms=platforms)
+
+
+HOP_PIT_PX = 112  # a gap of 7 tiles: proven impossible without the hopper
+HOPPER_SPEED_PX_S = 240.0  # a hop carries it about 116 px: across the pit
+
+
+def hopper_over_a_pit(hopper: bool = True) -> Level:
+    """A pit 7 tiles wide, and a fast hopper on its far side that hops towards it and leaps
+    out over it. A stomp on the hopper in mid-air, over the pit, bounces the player on to
+    the far side; no jump from the edge gets there."""
+    far = EDGE + HOP_PIT_PX
+    enemies = (EnemySpec(Box(far + 158, FLOOR - 12, 14, 12), HOPPER_SPEED_PX_S,
+                         "hopper"),) if hopper else ()
+    return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, EDGE, 64),
+                                         Box(far, FLOOR, WIDTH - far, 64)],
+                            Box(EDGE - 60, SPAWN.y, SPAWN.w, SPAWN.h), [exit_on(FLOOR)],
+                            enemies=enemies)
+
+
+CRUSHER = Box(192, 8, 144, 64)  # where it starts; it goes down until it meets the floor
+HIGH_FLOOR = 16  # the top of the high ground beside the crusher's shaft, with the Exit
+
+
+def respawn_on_a_crusher() -> Level:
+    """A wide crusher (a Platform 144 x 64 px) that goes up and down between high ground
+    and the floor, and a Checkpoint under its middle. Counted on the tick the crusher comes
+    down into the place over the flag, the flag puts the respawn on the crusher's top (the
+    nearest free place, nearer than either of its sides); crushed on that tick, the player
+    comes back there, rides up and walks onto the high ground. No jump reaches the crusher's
+    top, 64 px up even when it is down."""
+    crusher = PlatformSpec(Route(((CRUSHER.x, CRUSHER.y), (CRUSHER.x, FLOOR - CRUSHER.h))),
+                           CRUSHER.w, CRUSHER.h, 40.0)
+    flag = Box(CRUSHER.x + CRUSHER.w / 2 - 8, FLOOR - 32, 16, 32)
+    return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, WIDTH, 64),
+                                         Box(CRUSHER.right, HIGH_FLOOR, WIDTH - CRUSHER.right,
+                                             FLOOR - HIGH_FLOOR)],
+                            SPAWN, [exit_on(HIGH_FLOOR)], platforms=(crusher,),
+                            checkpoints=(flag,))
+
+
+def right_during(*spans: tuple[int, int]) -> Script:
+    """A script: hold right from each span's first tick up to (not including) its last."""
+    def held(tick: int) -> Actions:
+        return frozenset({RIGHT}) if any(a <= tick < b for a, b in spans) else frozenset()
+    return held
+
+
+CRUSHER_STEP = 371  # the player steps into the flag on the tick the crusher comes down
+
+
 # The winning scripts, written by hand from the maps' measures (run right, jump here).
 BUFFERED_PRESSES = (140, 176, 213)  # the last two while the player is still in the air
 WON_BY_SCRIPT: dict[str, tuple[Callable[[], Level], Script]] = {
@@ -248,6 +315,12 @@ WON_BY_SCRIPT: dict[str, tuple[Callable[[], Level], Script]] = {
     "low spikes crossed with buffered jumps": (
         low_spikes_with_one_tile_between,
         hold(jumps=[(press, 20) for press in BUFFERED_PRESSES])),
+    "pit crossed pushed by a moving wall": (pushed_across_by_a_wall,
+                                            hold(right_from=80, jumps=[(36, 20)])),
+    "pit crossed by a stomp on a hopper over it": (hopper_over_a_pit,
+                                                   hold(right_from=27, jumps=[(72, 40)])),
+    "high ground reached from a respawn a crusher moved": (
+        respawn_on_a_crusher, right_during((60, 198), (CRUSHER_STEP, 10**6))),
 }
 
 
@@ -272,6 +345,7 @@ UNWINNABLE: dict[str, Callable[[], Level]] = {
     "ledge over a jump, with no hopper to stomp": lambda: ledge_above_a_hopper(hopper=False),
     "low spikes a pixel longer than any jump clears":
         lambda: low_spikes_with_one_tile_between(math.floor(widest_low_row_cleared()) + 1),
+    "pit of 8 tiles with no wall to push": lambda: pushed_across_by_a_wall(wall=False),
 }
 
 
@@ -453,3 +527,108 @@ def test_the_check_summary_never_counts_a_map_as_solved_that_was_not(
     if undecided:
         assert f"{undecided} not decided" in summary
     assert status != 0 and (status == EXIT_UNDECIDED) == ("impossible" not in verdicts.values())
+
+
+def test_the_wall_carries_the_player_across_a_pit_no_jump_crosses() -> None:
+    """The same keys without the wall lose, and the map without it is proven impossible."""
+    _, script = WON_BY_SCRIPT["pit crossed pushed by a moving wall"]
+    assert DEFAULT_LIMITS.coyote_gap_px < PUSHED_PIT_PX
+    assert TUNING.run_speed_px_s < WALL_SPEED_PX_S
+    assert play(pushed_across_by_a_wall(), script).won
+    assert not play(pushed_across_by_a_wall(wall=False), script).won
+    assert judge(pushed_across_by_a_wall(wall=False), EFFORT).kind is Kind.IMPOSSIBLE
+
+
+def test_the_pit_is_crossed_only_by_a_stomp_on_the_hopper_in_the_air() -> None:
+    _, script = WON_BY_SCRIPT["pit crossed by a stomp on a hopper over it"]
+    played = play(hopper_over_a_pit(), script)
+    assert played.won and played.stomps == 1 and played.lives_lost == 0
+    assert not play(hopper_over_a_pit(hopper=False), script).won
+    assert judge(hopper_over_a_pit(hopper=False), EFFORT).kind is Kind.IMPOSSIBLE
+
+
+def test_the_crusher_moves_the_respawn_only_when_the_flag_counts_under_it() -> None:
+    """Stepping into the flag one tick earlier, before the crusher reaches the place over
+    it, counts the flag with the respawn standing at its foot: the crusher comes down on
+    the player there at once, each time it comes back, and every life goes in three ticks."""
+    level = respawn_on_a_crusher()
+    won = play(level, right_during((60, 198), (CRUSHER_STEP, 10**6)))
+    assert won.won and won.lives_lost == 1
+    campaign = Campaign(level.path, loader=lambda _path: level)
+    script = right_during((60, 198), (CRUSHER_STEP - 1, 10**6))
+    lost_on: list[int] = []
+    for tick in range(CRUSHER_STEP + 60):
+        before = campaign.deaths
+        campaign.tick(script(tick))
+        if campaign.deaths > before:
+            lost_on.append(tick)
+    assert campaign.outcome is Outcome.GAME_OVER
+    assert len(lost_on) == TUNING.start_lives and lost_on[-1] - lost_on[0] == 2
+
+
+FLAG_BY_THE_LIFT = Box(64, FLOOR - 32, 16, 32)
+LIFT = PlatformSpec(Route(((56, FLOOR - 48), (56, FLOOR - 8))), 32.0, 8.0, 40.0)
+
+
+def pit_with_a_lift_over_a_flag() -> Level:
+    """A pit of 7 tiles (proven impossible on its own), with a Checkpoint near the spawn
+    that a lift comes down over: where the flag puts the player depends on where the lift is
+    when it counts."""
+    return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, EDGE, 64),
+                                         Box(EDGE + 112, FLOOR, WIDTH - EDGE - 112, 64)],
+                            SPAWN, list(gap(112).exits), platforms=(LIFT,),
+                            checkpoints=(FLAG_BY_THE_LIFT,))
+
+
+def test_every_respawn_the_game_puts_under_a_lift_lies_in_the_bound_the_proof_uses() -> None:
+    """The game's own respawn for the flag, counted on each tick of the lift's round trip
+    and more, is inside the range the proof starts the player from."""
+    level = pit_with_a_lift_over_a_flag()
+    (_, start) = starts(World(level))
+    assert start.moved is not None
+    world = World(level)
+    seen = set()
+    for _ in range(300):
+        world.step(frozenset())
+        place = world._checkpoint_spawn(0, world.solids)
+        seen.add((place.x, place.y))
+        assert start.moved.left <= place.x <= start.moved.right, place
+        assert start.moved.top <= place.y <= start.moved.bottom, place
+    assert len(seen) > 10  # the lift moves it about
+
+
+def test_a_respawn_a_platform_may_move_without_a_bound_leaves_the_map_not_decided(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """Where no bound is found for where the flag may put the player, the proof says so
+    instead of calling the map impossible."""
+    monkeypatch.setattr("game.levels.reachable.moved_respawns", lambda *_: None)
+    verdict = judge(pit_with_a_lift_over_a_flag(), Effort(budget=500))
+    assert verdict.kind is Kind.UNDECIDED
+    assert "the proof of impossibility does not cover a respawn moved by a moving Platform " \
+        "(the Checkpoint at tile (4,8)" in verdict.finding
+    assert judge(gap(112), EFFORT).kind is Kind.IMPOSSIBLE
+
+
+WON_THROUGH_A_MECHANIC = ("pit crossed pushed by a moving wall",
+                          "pit crossed by a stomp on a hopper over it",
+                          "high ground reached from a respawn a crusher moved")
+
+
+@pytest.mark.parametrize("name", WON_THROUGH_A_MECHANIC)
+def test_a_map_won_through_a_mechanic_is_not_called_impossible_when_the_search_stops_short(
+        name: str) -> None:
+    """With no budget to search, the verdict is the proof's alone: it covers the push, the
+    stomp anywhere on the hopper's way and the respawn a crusher moves, so it proves nothing."""
+    make, script = WON_BY_SCRIPT[name]
+    assert play(make(), script).won
+    verdict = judge(make(), Effort(budget=1))
+    assert verdict.kind is Kind.UNDECIDED, verdict.finding
+
+
+def test_a_search_counts_every_life_a_crush_takes_within_one_move() -> None:
+    """Under the crusher, lives go one a tick: a move of the search may lose all of them,
+    and a route found must still win when the game replays it (solve() replays every route
+    it returns, and fails loudly on one that does not win)."""
+    level = respawn_on_a_crusher()
+    solution = solve(level, EFFORT, {})
+    assert not solution.found or replay(level.path, solution.held, level)[0]

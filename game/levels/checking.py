@@ -8,9 +8,11 @@ What it teaches: one record per finding, with its place in named fields (the obj
 the tile, the layer), so the same check feeds a person reading a terminal and a program
 selecting the object in an editor.
 
-A map is first read (:func:`game.levels.loader.check_level`): errors there make it *bad*.
-A map that loads is then judged (:mod:`game.levels.verdict`): solved, impossible or not
-decided.
+A map is first read (:func:`game.levels.loader.check_level`): errors there make it *bad*,
+as do the designer checks' few errors (a next level that does not load ends the game when
+this one is finished). Everything else is a warning with its place, and the map is then
+judged (:mod:`game.levels.verdict`): solved, impossible or not decided; a recorded win
+given with ``--proof`` makes it solved, whatever the warnings suggest.
 """
 
 from __future__ import annotations

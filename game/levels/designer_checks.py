@@ -9,7 +9,11 @@ What it teaches: an error names its place and says what happens in play, in Tile
   ``map property 'next_level'`` (the loader only warns, so the level itself still plays).
 * **A Checkpoint whose respawn place differs from where it stands**: the player comes back
   standing on the flag's bottom edge, moved to the nearest free place when that is in a
-  wall, so a flag drawn into the ground puts the player somewhere else: an error at the flag.
+  wall, so a flag drawn into the ground puts the player somewhere else: a warning at the
+  flag (the game plays it; a recorded win given with ``--proof`` shows the place works).
+* **A Checkpoint whose respawn place is on a moving Platform's path**: a player coming back
+  there while the platform passes is pushed into the ground and crushed at each respawn,
+  until the lives run out: a warning at the flag, naming the platform and the tile.
 * **A Checkpoint standing on spikes**: Hazard tiles inside the place the player comes back
   to, or under it where the player would fall: a warning at the flag, naming the tile.
 * **A moving Platform whose path runs into Solid tiles**: the platform passes through the
@@ -135,21 +139,61 @@ def _next_level(level: Level) -> Iterator[Finding]:
 
 
 def _respawn_place(world: World, flag: Box) -> tuple[Box, Box]:
-    """Where a player coming back to ``flag`` is put, and where it would stand if free."""
+    """Where a player coming back to ``flag`` is put when no moving platform is in the way
+    (the tiles alone), and where it would stand if free."""
     w, h = world.level.spawn.w, world.level.spawn.h
     standing = Box(flag.x + (flag.w - w) / 2, flag.bottom - h, w, h)
-    return nearest_free_place(world.solids, standing), standing
+    return nearest_free_place(world.level.grid, standing), standing
 
 
 def _checkpoints(level: Level, world: World, places: Sequence[Place]) -> Iterator[Finding]:
+    """A respawn the tiles move: a warning (the game plays it, and a recorded win that
+    passes the flag shows the place works)."""
     for flag, where in zip(level.checkpoints, places, strict=True):
         place, standing = _respawn_place(world, flag)
         if abs(place.x - standing.x) > SAME_PLACE_PX or abs(place.y - standing.y) > SAME_PLACE_PX:
-            yield ("error", where, "a player coming back to this Checkpoint "
+            yield ("warning", where, "a player coming back to this Checkpoint "
                    "would stand inside Solid tiles, so the game moves it to the nearest free "
                    f"place, ({place.x:g}, {place.y:g}) instead of ({standing.x:g}, "
                    f"{standing.y:g})", "move the Checkpoint so that its bottom edge rests on "
                    "the ground with open space above it")
+
+
+def _crushing_checkpoints(level: Level, world: World, flags: Sequence[Place],
+                          platforms: Sequence[Place]) -> Iterator[Finding]:
+    """A respawn place some moving platform's box passes through: a player coming back
+    there while the platform passes is pushed, into the ground or a wall if it stands on
+    one, and crushed at each respawn (a crush costs a life even while blinking), so every
+    life goes in as many ticks. Counted while the platform is there, the flag also moves
+    the respawn out of its way (:func:`game.levels.reachable.starts`)."""
+    for flag, where in zip(level.checkpoints, flags, strict=True):
+        place, _ = _respawn_place(world, flag)
+        for spec, platform in zip(level.platforms, platforms, strict=True):
+            if not _passes_through(spec, place):
+                continue
+            col, row = _tile_of(level.grid, place.x + place.w / 2, place.bottom - SLACK_PX)
+            yield ("warning", Place(where, where.object_id, (col, row)),
+                   f"a player coming back to this Checkpoint stands at tile ({col},{row}), on "
+                   f"the path of the moving Platform ({platform}): when it passes, it pushes the "
+                   "player into whatever the player stands on and crushes it again at each "
+                   "respawn, until the lives run out", "move the Checkpoint out of the "
+                   "platform's way, or move the platform's path (Edit Polygons tool) clear of "
+                   "the place above the flag's bottom edge")
+            break
+
+
+def _passes_through(spec: PlatformSpec, box: Box) -> bool:
+    """Does the platform's box overlap ``box`` somewhere along its path (swept leg by leg,
+    round to the first point for a polygon)?"""
+    w, h = spec.width_px, spec.height_px
+    legs = spec.path.legs or ((spec.path.points[0], spec.path.points[0]),)
+    for (x0, y0), (x1, y1) in legs:
+        if Box(x0, y0, w, h).overlaps(box):
+            return True
+        contact = sweep(Box(x0, y0, w, h), x1 - x0, y1 - y0, box)
+        if contact is not None and contact.t < 1.0:
+            return True
+    return False
 
 
 def _first(shapes: list[TileShape]) -> TileShape | None:
@@ -212,16 +256,21 @@ def _unreachable_coins(level: Level, world: World,
     in when the body overlaps the coin, as the fill counts an Exit's)."""
     if not level.coins:
         return
-    reach = reachable(world)
-    if reach is None:
-        return
     body, grid = world.spawn, level.grid
+    missed: list[tuple[set[tuple[int, int]], Place]] = []
+    guide = reachable(world, narrow=True)  # cheaper: most coins are in it, and so in the proof
     for coin, where in zip(level.coins, places, strict=True):
         left, right = coin.box.left - body.w / 2 - SLACK_PX, coin.box.right + body.w / 2 + SLACK_PX
         top, bottom = coin.box.top - SLACK_PX, coin.box.bottom + body.h + SLACK_PX
         first, last = _tile_of(grid, left, top), _tile_of(grid, right, bottom)
         cells = {(col, row) for col in range(first[0], last[0] + 1)
                  for row in range(first[1], last[1] + 1)}
+        if guide is None or not cells & guide.cells:
+            missed.append((cells, where))
+    reach = reachable(world) if missed else None
+    if reach is None or reach.unbounded:
+        return
+    for cells, where in missed:
         if cells & reach.cells:
             continue
         yield ("warning", where, "no jump reaches this Coin: it lies outside everything the "
@@ -268,6 +317,7 @@ def designer_findings(path: Path, level: Level) -> list[Finding]:
     coins = _places(parts.of_class("coin"), [c.box for c in level.coins], grid)
     layers, tilesets, header = parts.tile_layers, parts.tilesets, parts.header
     return [*_next_level(level), *_checkpoints(level, world, flags),
+            *_crushing_checkpoints(level, world, flags, platforms),
             *_spiked_checkpoints(level, world, flags), *_walled_platforms(level, platforms),
             *_unreachable_coins(level, world, coins), *_hidden_objects(parts),
             *tile_mistakes.turned_one_ways(layers, tilesets, header),

@@ -14,8 +14,16 @@ allows and never less:
 * **Launches.** Wherever the feet can rest (the top of any Solid or OneWay shape, any point
   of a moving platform's path, and an enemy's head, which gives a jump after a stomp) the
   player may jump. The rise allowed there is the highest a jump rises *in the game's own
-  tick* (:func:`jump_rise`), a little more for a platform's lift, plus an enemy's height and
-  hop where enemies are.
+  tick* (:func:`jump_rise`), or a stomp's bounce where that is faster, a little more for a
+  platform's lift, plus an enemy's height and hop where enemies are.
+* **Carried and pushed.** A moving platform carries a body on its top and pushes one at its
+  sides or underside, so every cell the feet of a body touching its box can be in, anywhere
+  along its path, is one group: reaching one reaches all, and each is a launch (a body
+  carried or pushed there may leave it jumping or falling).
+* **Stomps anywhere.** An enemy goes its own way whatever the player does (only a stomp
+  ends it), so where its head can be is worked out once by a fill of the enemy's own
+  (:func:`enemy_heads`: its body, its fastest speed, its hop, carried and pushed by the
+  platforms) and every place in it is a launch.
 * **The jump envelope.** After ``k`` ticks in the air (counting the coyote ticks before the
   jump) the feet are at most ``k`` ticks of full run speed to either side, and no higher than
   the best jump has risen by then. Every cell a jump could pass through, walls ignored for
@@ -25,7 +33,13 @@ allows and never less:
   enough that each row down allows at most a bounded sideways step; the fill carries on
   downward with that rule, and any place the feet can rest starts a new launch.
 * **Respawns.** A checkpoint whose column the reached region crosses adds its respawn place
-  as a new start.
+  as a new start. The game works that place out when the flag counts, with the platforms
+  where they are then; a flag a platform's route crosses over its foot may put the player
+  elsewhere, anywhere within the range :func:`moved_respawns` gives, and the fill starts
+  from all of it. Where no range is found, the fill says so (:attr:`Reach.unbounded`), and
+  an Exit it misses then proves nothing.
+* **Lives.** Spikes and enemies never stop the fill, and a lost life only sends the player
+  to a start above, so lives never widen it.
 
 Each rule only ever lets the point go further than the game would, so if an Exit's cells
 are never reached, the map cannot be won. The converse does not hold: a reached Exit proves
@@ -37,7 +51,10 @@ up and proves nothing (:func:`reachable` gives None, as for physics with no boun
 biggest map the game reads, with floors everywhere, the fill would otherwise take minutes.
 
 Two questions, from cheap to sharp: :func:`open_path` (is there any open way at all, gravity
-ignored?) and :func:`reachable` (is the Exit inside the jump envelope's fill?).
+ignored?) and :func:`reachable` (is the Exit inside the jump envelope's fill?). Asked
+``narrow``, :func:`reachable` rides platforms' tops only and stomps enemies only where they
+start: a cheaper fill and a tighter guide for the search, which proves nothing, but where it
+reaches an Exit the full fill does too.
 """
 
 from __future__ import annotations
@@ -45,7 +62,7 @@ from __future__ import annotations
 import math
 from collections import deque
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from game.collision.aabb import Box
 from game.collision.axis_sweep import ground_under
@@ -53,6 +70,7 @@ from game.collision.free_place import nearest_free_place
 from game.collision.shapes import TileKind
 from game.collision.tile_grid import TileGrid
 from game.sim.level import Level
+from game.sim.platforms import route_region
 from game.sim.tuning import Tuning
 from game.sim.world import World
 
@@ -137,11 +155,15 @@ class Envelope:
         return self.step_px * self.air_ticks_to_depth + self.slack_x_px
 
 
-def envelope_of(level: Level, tuning: Tuning) -> Envelope | None:
+def envelope_of(level: Level, tuning: Tuning, enemies: bool = True) -> Envelope | None:
     """The envelope for ``level`` played with ``tuning``; None when gravity does not bring a
-    jump back down (then no bound on the reach can be given)."""
+    jump back down (then no bound on the reach can be given). ``enemies``: whether the
+    level's enemies add a stomp to the rise (False for an enemy's own envelope, which
+    :func:`enemy_cells` works out)."""
     if tuning.gravity_px_s2 <= 0 or tuning.max_fall_speed_px_s <= 0:
         return None
+    if enemies and level.enemies and tuning.stomp_bounce_px_s > tuning.jump_speed_px_s:
+        tuning = replace(tuning, jump_speed_px_s=tuning.stomp_bounce_px_s)  # a stomp's rise
     rise = jump_rise(tuning)
     if rise[-1] >= 0:  # never came back down within the ticks looked at
         return None
@@ -162,7 +184,7 @@ def envelope_of(level: Level, tuning: Tuning) -> Envelope | None:
         at_tick[k] = max(at_tick[k], at_tick[k + 1])
     lift = max((p.speed_px_s * tuning.tick_s for p in level.platforms), default=0.0)
     enemy = 0.0
-    if level.enemies:
+    if enemies and level.enemies:
         enemy = max(e.box.h for e in level.enemies) + SLACK_PX
         if any(e.kind == "hopper" for e in level.enemies):
             hop = Tuning(jump_speed_px_s=tuning.hopper_jump_speed_px_s,
@@ -208,20 +230,70 @@ class Start:
 
     box: Box
     columns: frozenset[int]  # empty: the spawn, counted from the start
+    # what the fill cannot bound about this start, said when it counts (else None)
+    unbounded: str | None = None
+    # where a platform may move the respawn to: the range of its top-left corner (else None)
+    moved: Box | None = None
 
 
 def starts(world: World) -> list[Start]:
-    """The spawn, then each checkpoint's respawn place, found as the world finds it."""
+    """The spawn, then each checkpoint's respawn place, found as the world finds it with the
+    tiles alone. A flag some moving platform's route overlaps where the player comes back
+    may be counted while the platform fills that place, and the respawn is then moved to
+    wherever is free: the start gives the range it may be moved in (:attr:`Start.moved`),
+    or says that none was found (:attr:`Start.unbounded`)."""
     level, grid = world.level, world.level.grid
     found = [Start(world.spawn, frozenset())]
     w, h = level.spawn.w, level.spawn.h
     for flag in level.checkpoints:
-        place = nearest_free_place(world.solids, Box(flag.x + (flag.w - w) / 2,
-                                                     flag.bottom - h, w, h))
+        standing = Box(flag.x + (flag.w - w) / 2, flag.bottom - h, w, h)
+        place = nearest_free_place(grid, standing)
         first = math.floor((flag.left - w) / grid.tile_w)
         last = math.floor((flag.right + w) / grid.tile_w)
-        found.append(Start(place, frozenset(range(first, last + 1))))
+        columns = frozenset(range(first, last + 1))
+        regions = [route_region(spec) for spec in level.platforms]
+        if not any(region.overlaps(standing) for region in regions):
+            found.append(Start(place, columns))
+            continue
+        area = moved_respawns(grid, standing, regions, max(
+            [max(spec.width_px, spec.height_px) for spec in level.platforms]))
+        col, row = math.floor(flag.x / grid.tile_w), math.floor(flag.y / grid.tile_h)
+        found.append(Start(place, columns, None if area is not None else
+                           f"a respawn moved by a moving Platform (the Checkpoint at tile "
+                           f"({col},{row}) may be counted while a Platform fills the place "
+                           "the player comes back to)", area))
     return found
+
+
+def moved_respawns(grid: TileGrid, standing: Box, regions: list[Box],
+                   platform_px: float) -> Box | None:
+    """The range of top-left corners where the game may put a player coming back to a flag
+    whose place (``standing``) some platforms' routes cross (``regions``, each route's box
+    grown by its platform's size; ``platform_px``: the longest side of a platform), or
+    None if no bound is found.
+
+    The game (:func:`~game.collision.free_place.nearest_free_place`, with the platforms
+    where they are when the flag counts) widens its window round the place until some
+    candidate in it is free, each coordinate where it was or flush with a face of a wall
+    touching the window. Once the window holds a candidate of the tiles' faces alone that is
+    free of the tiles and of every route, it is free wherever the platforms are: the game
+    stops there or sooner, with each coordinate within the window, a wall's size and the
+    body's own size of where it was."""
+    w, h = standing.w, standing.h
+    search, limit = 64.0, max(grid.width_px, grid.height_px) + w + h  # as the game's
+    while search <= 2 * limit:
+        window = Box(standing.x - search, standing.y - search, w + 2 * search, h + 2 * search)
+        tiles = [s.box for s in grid.shapes_in(window) if s.kind is TileKind.SOLID]
+        xs = {standing.x} | {b.left - w for b in tiles} | {b.right for b in tiles}
+        ys = {standing.y} | {b.top - h for b in tiles} | {b.bottom for b in tiles}
+        around = Box(window.x - w, window.y - h, window.w + 2 * w, window.h + 2 * h)
+        walls = [*regions, *(s.box for s in grid.shapes_in(around) if s.kind is TileKind.SOLID)]
+        if any(not any(Box(x, y, w, h).overlaps(b) for b in walls) for x in xs for y in ys):
+            reach_x = search + max(platform_px, grid.tile_w) + w
+            reach_y = search + max(platform_px, grid.tile_h) + h
+            return Box(standing.x - reach_x, standing.y - reach_y, 2 * reach_x, 2 * reach_y)
+        search *= 2
+    return None
 
 
 @dataclass
@@ -233,6 +305,9 @@ class Reach:
     targets: set[Cell]
     # for each cell, the fewest steps of the fill from it to a target (the jump fill only)
     steps: dict[Cell, int] = field(default_factory=dict)
+    # the mechanics met on the way that the fill does not bound: while there are any, an
+    # Exit left out proves nothing
+    unbounded: list[str] = field(default_factory=list)
 
     def nearest_to_exit(self) -> Cell | None:
         """The reached cell closest (as the crow flies) to an Exit's cells."""
@@ -251,6 +326,7 @@ def _flood(world: World, fill: _Fill) -> Reach:
     (a flag counts when the player passes it)."""
     found = starts(world)
     pending = found[1:]
+    unbounded: list[str] = []
     fill.seed(found[0].box, _standing(world, found[0].box))
     while True:
         reached = fill.run()
@@ -261,8 +337,12 @@ def _flood(world: World, fill: _Fill) -> Reach:
         for start in woken:
             pending.remove(start)
             fill.seed(start.box, _standing(world, start.box))
+            if start.unbounded is not None:
+                unbounded.append(start.unbounded)
+            if start.moved is not None:
+                fill.seed_anywhere(start.moved, world.spawn)
     targets = {cell for cell in target_cells(world.level, world.spawn) if fill.open(cell)}
-    return Reach(reached, bool(reached & targets), targets)
+    return Reach(reached, bool(reached & targets), targets, unbounded=unbounded)
 
 
 def _standing(world: World, box: Box) -> bool:
@@ -290,6 +370,24 @@ class _Fill:
             self.seen.add(cell)
             self.queue.append(cell)
 
+    def cells_of(self, corners: Box, body: Box) -> Iterator[Cell]:
+        """The open cells the middle of the feet is in for a body whose top-left corner is
+        anywhere in ``corners``."""
+        grid = self.grid
+        first = _feet_cell(grid, corners.left + body.w / 2, corners.top + body.h)
+        last = _feet_cell(grid, corners.right + body.w / 2, corners.bottom + body.h)
+        for col in range(first[0], last[0] + 1):
+            for row in range(first[1], last[1] + 1):
+                if self.open((col, row)):
+                    yield col, row
+
+    def seed_anywhere(self, corners: Box, body: Box) -> None:
+        """Start from anywhere a body whose top-left corner is in ``corners`` can be."""
+        for cell in self.cells_of(corners, body):
+            if cell not in self.seen:
+                self.seen.add(cell)
+                self.queue.append(cell)
+
     def run(self) -> set[Cell]:
         while self.queue:
             col, row = self.queue.popleft()
@@ -312,10 +410,14 @@ def open_path(world: World, opened: frozenset[Cell] = frozenset()) -> Reach:
 class _JumpFill(_Fill):
     """The jump envelope's fill: launches, arcs within the envelope, and falls."""
 
-    def __init__(self, level: Level, envelope: Envelope, body: Box, work: FillWork) -> None:
+    def __init__(self, level: Level, envelope: Envelope, body: Box, work: FillWork,
+                 heads: Iterable[tuple[float, float, float]] = (), narrow: bool = False,
+                 ) -> None:
         grid = level.grid
         self.work = work
-        launches = self._launch_heights(level, body, work)
+        self.narrow = narrow
+        groups = self._platform_groups(level, body, work, narrow)
+        launches = self._launch_heights(level, body, work, [] if narrow else groups, heads)
         top = min([row for _, row in launches] + [0])
         rise_rows = math.ceil(max(envelope.rise_by_tick) + envelope.extra_rise_px) // max(
             1, grid.tile_h) + 2
@@ -326,10 +428,11 @@ class _JumpFill(_Fill):
         self.moves: dict[Cell, set[Cell]] = {}  # every step from cell to cell the fill made
         self.falling: set[tuple[int, int, bool]] = set()
         self.fall_queue: deque[tuple[int, int, bool]] = deque()
-        self.platform_cells = self._platform_groups(level, body, work)
+        self.platform_cells = groups
 
     @staticmethod
-    def _launch_heights(level: Level, body: Box, work: FillWork) -> dict[Cell, float]:
+    def _launch_heights(level: Level, body: Box, work: FillWork, groups: list[set[Cell]],
+                        heads: Iterable[tuple[float, float, float]]) -> dict[Cell, float]:
         grid = level.grid
         heights: dict[Cell, float] = {}
 
@@ -351,36 +454,62 @@ class _JumpFill(_Fill):
         for spec in level.platforms:
             for x, y in _along(spec.path.legs, spec.path.points, min(grid.tile_w, grid.tile_h) / 4):
                 rest(x, x + spec.width_px, y)
-        for enemy in level.enemies:  # an enemy stands on some floor: its head is covered
-            rest(enemy.box.left, enemy.box.right, enemy.box.top)  # by extra_rise_px elsewhere
+        for group in groups:  # carried or pushed there, the player may leave from anywhere
+            work.spend(len(group))
+            for col, row in group:
+                if heights.get((col, row), math.inf) > row * grid.tile_h:
+                    heights[(col, row)] = row * grid.tile_h
+        for left, right, top in heads:  # a stomp wherever an enemy's head can be
+            rest(left, right, top)
         return heights
 
     @staticmethod
-    def _platform_groups(level: Level, body: Box, work: FillWork) -> list[set[Cell]]:
-        """For each platform, every cell its riders' feet can be carried through."""
+    def _platform_groups(level: Level, body: Box, work: FillWork,
+                         narrow: bool = False) -> list[set[Cell]]:
+        """For each platform, every cell the feet of a body touching its box can be in,
+        anywhere along its path: riding its top, pushed by its sides, pushed down by its
+        underside; carried or pushed, the body goes wherever the platform goes.
+        ``narrow``: only riding its top (a guide, not a bound)."""
         grid = level.grid
         groups: list[set[Cell]] = []
         for spec in level.platforms:
             cells: set[Cell] = set()
             for x, y in _along(spec.path.legs, spec.path.points, min(grid.tile_w, grid.tile_h) / 4):
-                work.spend(1 + math.ceil((spec.width_px + body.w) / grid.tile_w))
-                row = math.floor((y - SLACK_PX) / grid.tile_h)
-                for col in range(math.floor((x - body.w / 2) / grid.tile_w),
-                                 math.floor((x + spec.width_px + body.w / 2) / grid.tile_w) + 1):
-                    for near_row in (row - 1, row, row + 1):  # pushed up or down a little
-                        cells.add((col, near_row))
+                top = math.floor((y - SLACK_PX) / grid.tile_h) - 1  # pushed up a little
+                bottom = (top + 2 if narrow else  # or down a little
+                          math.floor((y + spec.height_px + body.h) / grid.tile_h) + 1)
+                first = math.floor((x - body.w / 2 - SLACK_PX) / grid.tile_w)
+                last = math.floor((x + spec.width_px + body.w / 2 + SLACK_PX) / grid.tile_w)
+                work.spend((last - first + 1) * (bottom - top + 1))
+                for col in range(first, last + 1):
+                    for row in range(top, bottom + 1):
+                        cells.add((col, row))
             groups.append(cells)
         return groups
 
     def seed(self, box: Box, standing: bool) -> None:
         """Start at ``box``: a jump from where it stands, or a fall from where it floats."""
         cell = _feet_cell(self.grid, box.x + box.w / 2, box.bottom)
-        self.seen.add(cell)
+        if self.narrow:
+            self.seen.add(cell)
+        else:  # a start on a platform's route rides or is pushed from there
+            self._reach_cell(cell)
         if standing:
             self.launch_y[cell] = min(self.launch_y.get(cell, math.inf), box.bottom)
             self.queue.append(cell)
         else:
             self._arc(cell, box.bottom, max_rise=0.0)
+
+    def seed_anywhere(self, corners: Box, body: Box) -> None:
+        """Start from anywhere a body whose top-left corner is in ``corners`` can be: a
+        jump from each of those cells, from its top (more than a fall from rest allows)."""
+        for cell in self.cells_of(corners, body):
+            self.work.spend(1)
+            self.launch_y[cell] = min(self.launch_y.get(cell, math.inf),
+                                      cell[1] * self.grid.tile_h)
+            self.launched.discard(cell)
+            self._reach_cell(cell)
+            self.queue.append(cell)
 
     def _reach_cell(self, cell: Cell) -> None:
         if cell not in self.seen:
@@ -489,9 +618,16 @@ def steps_to_exit(world: World) -> dict[Cell, int] | None:
     """For every cell the fill reached, the fewest of its steps (cell to cell, as the fill
     moved) to a cell where the player touches an Exit; a cell from which no step leads
     there is left out. None when the tuning gives no bound. A guide for the search: a place
-    left out is one from which, by the proof above, no route can go on to an Exit."""
+    left out is one from which, by the proof above, no route can go on to an Exit. The
+    narrow fill's steps when it reaches an Exit (they lead more tightly); the full fill's
+    otherwise, and none (empty) when it met a mechanic it does not bound."""
+    guide = reachable(world, narrow=True)
+    if guide is None or guide.touches_exit:
+        return None if guide is None else guide.steps
     reach = reachable(world)
-    return None if reach is None else reach.steps
+    if reach is None:
+        return None
+    return {} if reach.unbounded and not reach.touches_exit else reach.steps
 
 
 def _steps_back(fill: _JumpFill, reach: Reach) -> dict[Cell, int]:
@@ -517,20 +653,67 @@ def _steps_back(fill: _JumpFill, reach: Reach) -> dict[Cell, int]:
     return steps
 
 
-def reachable(world: World, work: FillWork | None = None) -> Reach | None:
+def reachable(world: World, work: FillWork | None = None, narrow: bool = False,
+              ) -> Reach | None:
     """The jump envelope's fill from the spawn (and each checkpoint's respawn once met), for
     the world's level and tuning, with the steps back to an Exit from each cell it reached
     (:func:`steps_to_exit`); None when the tuning gives no bound (a jump that never comes
     down) or the fill would take more than its budget of steps (``work``, by default
-    :data:`MAX_FILL_STEPS`; it counts the steps taken)."""
+    :data:`MAX_FILL_STEPS`; it counts the steps taken).
+
+    ``narrow``: a cheaper fill that is a guide, never a proof: it lets the player ride a
+    platform's top but not be pushed by its sides, and stomp an enemy only where it starts.
+    Its steps lead a search more tightly; where it reaches an Exit, the full fill would too,
+    so no proof is lost by asking it first (:func:`game.levels.verdict.prove_impossible`)."""
     envelope = envelope_of(world.level, world.tuning)
     if envelope is None:
         return None
     work = work if work is not None else FillWork()
     try:
-        fill = _JumpFill(world.level, envelope, world.spawn, work)
+        if narrow:
+            heads: list[tuple[float, float, float]] | None = [
+                (e.box.left, e.box.right, e.box.top) for e in world.level.enemies]
+        else:
+            heads = enemy_heads(world, work)
+        if heads is None:
+            return None
+        fill = _JumpFill(world.level, envelope, world.spawn, work, heads, narrow)
         reach = _flood(world, fill)
         reach.steps = _steps_back(fill, reach)
+        if narrow:
+            reach.unbounded.append("being pushed by a moving Platform's side or a stomp on "
+                                   "an enemy away from where it starts")
     except FillTooBig:
         return None
     return reach
+
+
+def enemy_heads(world: World, work: FillWork) -> list[tuple[float, float, float]] | None:
+    """Everywhere an enemy's head can ever be, as (left, right, top) spans the player's feet
+    may stomp (so bounce) from: each kind and size of enemy gets a jump fill of its own
+    body, its fastest speed and its hop (a walker's rise is nothing), seeded where each of
+    them starts, carried and pushed by the platforms as the player is. An enemy goes its
+    own way whatever the player does (only a stomp ends it), so this covers every bounce.
+    None when physics give no bound."""
+    level, tuning, grid = world.level, world.tuning, world.level.grid
+    kinds: dict[tuple[bool, float, float], list[Box]] = {}
+    speeds: dict[tuple[bool, float, float], float] = {}
+    for enemy in level.enemies:
+        kind = (enemy.kind == "hopper", enemy.box.w, enemy.box.h)
+        kinds.setdefault(kind, []).append(enemy.box)
+        speed = tuning.enemy_speed_px_s if enemy.speed_px_s is None else enemy.speed_px_s
+        speeds[kind] = max(speeds.get(kind, 0.0), abs(speed))
+    heads = [(e.box.left, e.box.right, e.box.top) for e in level.enemies]  # as they start
+    for (hopper, w, h), boxes in kinds.items():
+        own = replace(tuning, run_speed_px_s=speeds[(hopper, w, h)],
+                      jump_speed_px_s=tuning.hopper_jump_speed_px_s if hopper else 0.0)
+        envelope = envelope_of(level, own, enemies=False)
+        if envelope is None:
+            return None
+        fill = _JumpFill(level, envelope, boxes[0], work)
+        for box in boxes:
+            fill.seed(box, _standing(world, box))
+        for col, row in fill.run():
+            heads.append((col * grid.tile_w - w / 2, (col + 1) * grid.tile_w + w / 2,
+                          row * grid.tile_h - h))
+    return heads

@@ -251,6 +251,7 @@ class _Search:
         self.start = Snapshot.of(self.world)
         self.goal_cells = [cell for cell, steps in self.steps.items() if steps == 0]
         self.lives = self.world.tuning.start_lives
+        self.lost_in_move = 0  # lives the last move lost (:meth:`hold`)
         self.routes = [route_box(platform) for platform in self.world.platforms]
         self.moves: list[tuple[Actions, int]] = [(choice, MOVE_TICKS) for choice in CHOICES]
         if self.world.platforms and WAIT_TICKS:
@@ -385,11 +386,9 @@ class _Search:
               ) -> tuple[float, Snapshot, Node] | None:
         """The new state the world is in after a move from ``parent`` (``outcome``: as
         :meth:`try_move` gives it), scored, or None if it was seen before or leads nowhere."""
-        lost = parent.lives_lost if parent is not None else 0
-        if outcome < 0:
-            lost += 1
-            if lost >= self.lives:
-                return None
+        lost = (parent.lives_lost if parent is not None else 0) + self.lost_in_move
+        if lost >= self.lives:
+            return None  # the game is over before the move ends (or reaches the Exit)
         child = Node(parent, choice, start + (outcome if outcome > 0 else move_ticks), lost)
         if outcome > 0:
             return -math.inf, snapshot, child
@@ -543,7 +542,8 @@ class _Search:
                  move_ticks: int = MOVE_TICKS) -> int:
         """Hold ``choice`` for one move from ``snapshot`` (taken at tick ``start``, and
         restored already): +ticks if an Exit was reached on that tick, else -1 if a life was
-        lost on the way (the world has put the player back), 0 if not.
+        lost on the way (the world has put the player back), 0 if not. The lives lost on
+        the way (each tick of a crush takes one) are left in :attr:`lost_in_move`.
 
         Enemies far from the player are left out while it steps (:mod:`.enemy_timeline`);
         if the player comes close to one after all, the move is made again with all of them.
@@ -567,7 +567,7 @@ class _Search:
         timeline = self.timeline
         if away:
             timeline.leave_out(away)
-        hurt = False
+        self.lost_in_move = 0  # a crush can take a life on each tick of one move
         for tick in range(1, move_ticks + 1):
             events = self.world.step(choice)
             if away and not timeline.clear_of(away, start + tick):
@@ -578,10 +578,10 @@ class _Search:
                     if away:
                         timeline.put_back(away, start + tick)
                     return tick
-                hurt = hurt or event.kind is EventKind.HURT
+                self.lost_in_move += event.kind is EventKind.HURT
         if away:
             timeline.put_back(away, start + move_ticks)
-        return -1 if hurt else 0
+        return -1 if self.lost_in_move else 0
 
 
 def _held_per_tick(node: Node | None) -> list[Actions]:

@@ -10,7 +10,9 @@ What it teaches: keep what was *proven* apart from what was merely *not found*.
   designer's own recorded win given with ``--proof``).
 * **Impossible**: no open path of cells joins the spawn and an Exit, or the Exit lies
   outside everything the player's jumps could touch. Both are over-approximations, so they
-  never call a winnable map impossible.
+  never call a winnable map impossible. The second is a proof only when it bounds every
+  mechanic the fill met on the way (:attr:`game.levels.reachable.Reach.unbounded`): where
+  one is left unbounded the map is not decided, and the line names the mechanic.
 * **Not decided**: the search spent its budget (or its seconds) without a route, and
   nothing proved the map impossible. That is said as such, with the bound, the work done,
   the furthest place reached and how to search further; it never reads as solved.
@@ -63,7 +65,7 @@ def prove_impossible(level: Level) -> tuple[Verdict | None, Reach | None]:
     if not level.exits:
         return None, None
     sealed = open_path(world)
-    if not sealed.touches_exit:
+    if not sealed.touches_exit and not sealed.unbounded:  # (a moved respawn may be anywhere)
         culprit = _closing_layer(world)
         blame = (f"; without the Solid tiles of layer '{culprit}' there would be a way"
                  if culprit is not None else "")
@@ -74,8 +76,11 @@ def prove_impossible(level: Level) -> tuple[Verdict | None, Reach | None]:
                        "impossible: no open path joins the spawn and an Exit; Solid tiles "
                        f"close every way{blame}; this is the nearest open place to an Exit",
                        fix, reach=sealed), None
+    guide = reachable(world, narrow=True)  # cheaper, and the tighter guide for a search
+    if guide is None or guide.touches_exit:  # (no bound, or past its budget: so is the full)
+        return None, guide
     reach = reachable(world)
-    if reach is not None and not reach.touches_exit:
+    if reach is not None and not reach.touches_exit and not reach.unbounded:
         return Verdict(Kind.IMPOSSIBLE, reach.nearest_to_exit(),
                        "impossible: the Exit lies outside everything the player's jumps can "
                        "touch; this is the nearest place they reach",
@@ -106,9 +111,12 @@ def judge(level: Level, effort: Effort, command: str = "python -m game.levels") 
     impossible, reach = prove_impossible(level)
     if impossible is not None:
         return impossible
-    # No reach (physics with no bound, or a fill past its budget of steps): the search is
-    # guided by open cells alone, and does not try the fill again.
-    solution = solve(level, effort, reach.steps if reach is not None else {})
+    # No reach (physics with no bound, or a fill past its budget of steps), or one that
+    # missed the Exit but met a mechanic it does not bound: the search is guided by open
+    # cells alone, and does not try the fill again.
+    unbounded = reach.unbounded if reach is not None and not reach.touches_exit else []
+    guide = reach.steps if reach is not None and not unbounded else {}
+    solution = solve(level, effort, guide)
     if solution.found:
         return Verdict(Kind.SOLVED, None, f"solved: a route reaches an Exit at tick "
                        f"{solution.exit_tick}", "", solution)
@@ -120,11 +128,13 @@ def judge(level: Level, effort: Effort, command: str = "python -m game.levels") 
     else:
         bound = "every move its beams kept"
     more = max(effort.budget * 4, solution.moves_tried * 4)
+    why = (f"the proof of impossibility does not cover {' nor '.join(unbounded)}"
+           if unbounded else "nothing proves the map impossible")
     return Verdict(
         Kind.UNDECIDED, (col, row),
         f"not decided: the search found no route within {bound} ({solution.moves_tried:,} "
-        f"moves tried, {solution.states:,} states kept) and nothing proves the map "
-        "impossible; this is the furthest place reached",
+        f"moves tried, {solution.states:,} states kept) and {why}; this is the furthest "
+        "place reached",
         f"search further with --budget {more}, see how far it got with {command} solve "
         f"MAP --picture route.png, or prove it winnable with --proof SCRIPT "
         "(a win recorded with python -m game --record)",
