@@ -60,10 +60,11 @@ def write_csv(path: Path, rows: Iterable[Row]) -> None:
     write_text_atomically(path, csv_text(rows))
 
 
-def read_csv(path: Path) -> list[Row]:
+def read_csv(path: Path, *, just_written: bool = False) -> list[Row]:
     """Rows back from a file written by :func:`write_csv`, read through the one bounded
-    open (:func:`game.app.files.read_small_text`)."""
-    text = read_small_text(path, MAX_CSV_BYTES, "the measurements")
+    open (:func:`game.app.files.read_small_text`); ``just_written``: the run's own output,
+    read back, which is not an input the run may not write again."""
+    text = read_small_text(path, MAX_CSV_BYTES, "the measurements", updated=just_written)
     return [Row(r["chart"], r["method"], r["parameter"], int(r["round"]),
                 float(r["value"]), r["unit"])
             for r in csv.DictReader(io.StringIO(text, newline=""))]
