@@ -1,5 +1,5 @@
 """What the level tools print is bounded, escaped and honest, and an output nobody reads
-ends them quietly: each test is a case an attacker found, rebuilt from its description.
+ends them quietly: each test is a hostile input the level tools must answer in one line.
 
 Closed and full outputs need the program itself (a real descriptor 1); the rest is called
 in this process (:mod:`tests.in_process`).
