@@ -293,12 +293,17 @@ def looks_map(folder: Path, rows: list[str], layer: str = "ground") -> Path:
     looks_tileset(folder)
     gids = {"#": 1, "d": 2, "f": 3}
     data = ",\n".join(",".join(str(gids.get(c, 0)) for c in row) for row in rows)
-    path = folder / "looks.tmx"
+    return one_layer_map(folder / "looks.tmx", "looks.tsx", layer, len(rows[0]), len(rows), data)
+
+
+def one_layer_map(path: Path, tileset: str, layer: str, width: int, height: int,
+                  data: str) -> Path:
+    """A map of one tile layer in ``tileset``, a Player at its left and an Exit at its right."""
     path.write_text(f"""<?xml version="1.0" encoding="UTF-8"?>
-<map version="1.8" orientation="orthogonal" renderorder="right-down" width="{len(rows[0])}"
- height="{len(rows)}" tilewidth="16" tileheight="16" infinite="0">
- <tileset firstgid="1" source="looks.tsx"/>
- <layer id="1" name="{layer}" width="{len(rows[0])}" height="{len(rows)}">
+<map version="1.8" orientation="orthogonal" renderorder="right-down" width="{width}"
+ height="{height}" tilewidth="16" tileheight="16" infinite="0">
+ <tileset firstgid="1" source="{tileset}"/>
+ <layer id="1" name="{layer}" width="{width}" height="{height}">
   <data encoding="csv">
 {data}
 </data>
@@ -376,22 +381,8 @@ def test_the_shipped_dark_stone_and_dark_dirt_are_ground(tmp_path: Path) -> None
         shutil.copy(LEVELS_DIR.parent / "assets" / name, tmp_path / "assets" / name)
     floor = ["1"] * 6 + ["15", "16"] + ["1"] * 8  # tile 0 is ground; gid 15 is tile 14
     data = ",\n".join([",".join(["0"] * 16)] * 3 + [",".join(floor)])
-    path = tmp_path / "levels" / "dark.tmx"
-    path.write_text(f"""<?xml version="1.0" encoding="UTF-8"?>
-<map version="1.8" orientation="orthogonal" renderorder="right-down" width="16" height="4"
- tilewidth="16" tileheight="16" infinite="0">
- <tileset firstgid="1" source="../assets/tiles.tsx"/>
- <layer id="1" name="ground" width="16" height="4">
-  <data encoding="csv">
-{data}
-</data>
- </layer>
- <objectgroup id="2" name="objects">
-  <object id="1" type="Player" x="16" y="34" width="12" height="14"/>
-  <object id="2" type="Exit" x="208" y="32" width="16" height="16"/>
- </objectgroup>
-</map>
-""", encoding="utf-8")
+    path = one_layer_map(tmp_path / "levels" / "dark.tmx", "../assets/tiles.tsx", "ground",
+                         16, 4, data)
     assert found(path, "looks like ground") == []
     kinds = {(s.col, s.row): s.kind for s in load_level(path).grid.shapes()}
     assert kinds[(6, 3)] is kinds[(7, 3)] is TileKind.SOLID
