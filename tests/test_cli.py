@@ -224,3 +224,12 @@ def test_a_headless_run_without_ticks_stops_at_its_limit_and_says_so(
     status, err = in_process("--headless", "--report", out)
     assert status == 0 and json.loads(out.read_text("utf-8"))["ticks"] == 30
     assert err.startswith("the run stopped after 30 ticks") and "--ticks N" in err
+
+
+@pytest.mark.parametrize(("last_tick", "status"), [(29, 0), (30, 2)])
+def test_a_script_may_end_on_the_last_tick_of_a_headless_run_and_no_later(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch, last_tick: int, status: int) -> None:
+    monkeypatch.setattr(run_module, "HEADLESS_TICK_LIMIT", 30)
+    script = tmp_path / "edge.txt"
+    script.write_text(f"0 +right\n{last_tick} -right\n", encoding="utf-8")
+    assert in_process("--headless", "--inputs", script)[0] == status
