@@ -1,14 +1,17 @@
 """The files a run reads and writes, handled so that no path can hang, crash or flood it.
 
 Where it sits: under every file the app touches: ``--inputs``, ``--record``, ``--report``,
-``--screenshot``, and the player's ``settings.json`` and ``progress.json``.
+``--screenshot``, the player's ``settings.json`` and ``progress.json``, and the game's own
+pictures, fonts and sounds. It wraps the two cores every command shares,
+:func:`game.levels.reading.read_bounded` and :func:`game.levels.outputs.replace_atomically`,
+in the app's sentences.
 
 What it teaches:
-  * **Look before you open.** :func:`read_small_text` asks ``stat`` what a path is before
-    opening it: a folder or a device such as ``/dev/zero`` (which never ends) is refused,
-    and so is a file larger than the caller's limit, so nothing is read that could not fit.
-    A named pipe, where the caller accepts one (an input script made by ``<(command)``), is
-    opened without blocking and read with a time limit, so a pipe nobody writes to is a
+  * **Check what you opened.** :func:`read_small_text` opens a path without blocking and
+    asks the open descriptor what it is: a folder or a device such as ``/dev/zero`` (which
+    never ends) is refused, and so is a file larger than the caller's limit, so nothing is
+    read that could not fit. A named pipe, where the caller accepts one (an input script
+    made by ``<(command)``), is read with time limits, so a pipe nobody writes to is a
     sentence after ten seconds instead of a hang.
   * **Write atomically.** :func:`write_atomically` writes a temporary file in the same
     folder, under a short plain name (:func:`game.levels.outputs.temporary_path`, so a real
@@ -19,8 +22,9 @@ What it teaches:
     same file is read or written (:func:`remove_orphans`).
   * **Check an output before the work.** :func:`output_problem` says, before a long run,
     whether the path given for a report can be written at all (a folder, a path under a
-    file, a read-only folder, a device that a rename would replace), so a run never ends by
-    losing its result.
+    file, a read-only folder, a folder that is not there, a device that a rename would
+    replace, a symbolic link, a file the run has read), so a run never ends by losing its
+    result or an input.
 
 Every problem is a :class:`FileProblem` whose message is one sentence naming the path.
 """

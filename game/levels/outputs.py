@@ -1,8 +1,11 @@
-"""Write a file the level tools make (a solver's script, a route picture) so that a failed
-write leaves nothing behind: a temporary file beside it, then a rename.
+"""The one way out: every file any command writes is written whole or not at all, a
+temporary file beside it, put on the disk, then a rename.
 
-Where it sits: under ``python -m game.levels solve``, and under the app's own outputs
-(:mod:`game.app.files` names its temporary files and saves its pictures the same way).
+Where it sits: under every file any command writes. ``python -m game.levels solve`` calls
+:func:`replace_atomically` through :func:`write_output`, ``types --write`` and the terrain
+tool call it directly, and the game, the lab, the bench and the asset tools through the
+app's wrappers in :mod:`game.app.files`. :func:`refusal` says which paths an output may
+never replace.
 
 What it teaches:
   * **The temporary name is the program's, not the user's.** It is made of plain ASCII

@@ -26,7 +26,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from enum import Enum
 
-from game.sim.whole_numbers import NumberTextError, read_whole
+from game.sim.whole_numbers import NumberTextError, is_digits, read_whole
 
 
 class Action(Enum):
@@ -75,7 +75,7 @@ def _parse_line(text: str, where: str) -> InputEvent:
         raise InputScriptError(f"{where}: expected '<tick> <+|-><action>', "
                                f"got {_excerpt(text)}")
     tick_text, change = parts
-    if not (tick_text.isascii() and tick_text.isdigit()):
+    if not is_digits(tick_text):
         raise InputScriptError(f"{where}: the tick must be a whole number >= 0, "
                                f"got {_excerpt(tick_text)}")
     try:
