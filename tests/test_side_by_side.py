@@ -195,17 +195,22 @@ needs_two_cores = pytest.mark.skipif(
     reason="two workers, seen through /proc")
 
 
+def _ended(process: subprocess.Popen[str], failure: str) -> tuple[str, str]:
+    """What the check printed once it ended; a failure (and the check killed) if it hangs."""
+    try:
+        return process.communicate(timeout=HANG_S)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.communicate()
+        pytest.fail(failure)
+
+
 @needs_two_cores
 def test_sigterm_ends_every_worker_with_the_check(tmp_path: Path) -> None:
     process = _check_side_by_side(_long_folder(tmp_path))
     _busy_workers(process)
     os.kill(process.pid, signal.SIGTERM)
-    try:
-        _out, err = process.communicate(timeout=HANG_S)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        process.communicate()
-        pytest.fail("the check did not end")
+    _out, err = _ended(process, "the check did not end")
     assert (process.returncode, err) == (143, "stopped by SIGTERM\n")
     assert not _left_in(process.pid), "a worker outlived the check"
 
@@ -215,12 +220,7 @@ def test_a_worker_killed_mid_check_is_reported_and_the_rest_are_checked(
         tmp_path: Path) -> None:
     process = _check_side_by_side(_long_folder(tmp_path))
     os.kill(_busy_workers(process)[0], signal.SIGKILL)  # as the out-of-memory killer does
-    try:
-        out, err = process.communicate(timeout=HANG_S)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        process.communicate()
-        pytest.fail("the check waited for ever for the map of the killed worker")
+    out, err = _ended(process, "the check waited for ever for the map of the killed worker")
     lines = out.splitlines()
     assert (process.returncode, err) == (1, "")
     (killed,) = [line for line in lines if "was killed by signal 9" in line]
