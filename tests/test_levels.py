@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -15,6 +16,7 @@ from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.levels.__main__ import main as levels_main
 from game.levels.loader import check_level
 from game.levels.reach import DEFAULT_LIMITS, measure_limits, measure_reach
+from game.sim.camera import VIEW_H_PX, VIEW_W_PX
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action
 from game.sim.tuning import Tuning
@@ -69,17 +71,6 @@ def test_the_checker_names_the_file_and_the_fix_for_a_bad_map(tmp_path: Path) ->
     assert " — " in result.stdout and "Traceback" not in result.stdout + result.stderr
 
 
-@pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
-def test_the_scripted_run_reaches_the_exit(level: Path) -> None:
-    script = input_script(SCRIPTS / f"{level.stem}.txt")
-    campaign = Campaign(level, loader=load_level, measure=MEASURED)
-    while campaign.levels_completed == 0 and campaign.outcome is Outcome.RUNNING:
-        campaign.tick(script.held_at(campaign.ticks))
-        assert campaign.ticks < 60 * 60, "the script did not reach the exit in a minute"
-    assert campaign.levels_completed == 1 and campaign.deaths == 0
-    assert campaign.max_penetration_px == 0.0
-
-
 def test_tile_layers_keep_tiled_document_order_around_object_layers() -> None:
     level = load_level(FIRST_LEVEL)
     assert [layer.name for layer in level.layers] == ["decor", "ground"]
@@ -95,18 +86,65 @@ def test_hazard_tiles_use_their_partial_collision_rectangle() -> None:
         assert shape.box.x == shape.col * 16 + 1 and shape.box.y == shape.row * 16 + 8
 
 
-def test_the_whole_campaign_is_won_from_the_first_level_to_the_win() -> None:
-    campaign = Campaign(FIRST_LEVEL, loader=load_level)
+def exit_tick_said(script: Path) -> int:
+    """The tick a winning script says, in its comment, that it reaches the exit."""
+    said = re.search(r"^# reaches the exit at tick (\d+)$", script.read_text(encoding="utf-8"),
+                     re.MULTILINE)
+    assert said, f"{script.name} does not say the tick it reaches the exit"
+    return int(said.group(1))
+
+
+def test_the_whole_campaign_is_won_by_the_winning_scripts_at_the_ticks_they_say() -> None:
+    """Each level's script, played on from the one before, reaches the exit at the tick its
+    comment says, with no life lost and no overlap: every shipped script is replayed once."""
+    campaign = Campaign(FIRST_LEVEL, loader=load_level, measure=MEASURED)
     start_tick, script = 0, input_script(SCRIPTS / f"{FIRST_LEVEL.stem}.txt")
-    level = campaign.world.level.path
+    level, won_at = campaign.world.level.path, dict[str, int]()
     while campaign.outcome is Outcome.RUNNING:
         campaign.tick(script.held_at(campaign.ticks - start_tick))
-        if campaign.world.level.path != level:       # on to the next level and its script
-            level, start_tick = campaign.world.level.path, campaign.ticks
-            script = input_script(SCRIPTS / f"{level.stem}.txt")
-        assert campaign.ticks < 60 * 60 * 5
-    assert campaign.outcome is Outcome.WON
-    assert campaign.levels_completed == len(SHIPPED) and campaign.deaths == 0
+        if campaign.levels_completed > len(won_at):
+            won_at[level.stem] = campaign.ticks - start_tick
+            assert campaign.deaths == 0, f"{level.name}: the script lost a life"
+            if campaign.outcome is Outcome.RUNNING:       # on to the next level and its script
+                level, start_tick = campaign.world.level.path, campaign.ticks
+                script = input_script(SCRIPTS / f"{level.stem}.txt")
+        assert campaign.ticks - start_tick < 60 * 60 * 5, f"{level.name}: no exit in 5 minutes"
+    assert campaign.outcome is Outcome.WON and campaign.max_penetration_px == 0.0
+    assert won_at == {path.stem: exit_tick_said(SCRIPTS / f"{path.stem}.txt")
+                      for path in SHIPPED}
+
+
+CAMPAIGN_TICKS = 8 * 60 * 60  # the campaign lasts at least 8 minutes at the scripts' pace
+LONG_LEVEL_TICKS = 40 * 60  # a level whose script takes longer than this has a Checkpoint
+TARGET_SLACK = 1.3  # a level's target_seconds is at most this times its script's time, + 1 s
+
+
+def test_the_campaign_is_twelve_levels_and_eight_minutes_at_the_scripts_pace() -> None:
+    ticks = [exit_tick_said(SCRIPTS / f"{path.stem}.txt") for path in SHIPPED]
+    assert len(SHIPPED) == 12 and sum(ticks) >= CAMPAIGN_TICKS
+
+
+@pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
+def test_a_long_level_has_a_checkpoint_and_every_level_a_target_time_above_its_script(
+        level: Path) -> None:
+    loaded = load_level(level)
+    seconds = exit_tick_said(SCRIPTS / f"{level.stem}.txt") / 60
+    if seconds * 60 > LONG_LEVEL_TICKS:
+        assert loaded.checkpoints, f"{level.name} lasts {seconds:.0f} s with no Checkpoint"
+    target = loaded.properties.get("target_seconds")
+    assert isinstance(target, float), f"{level.name} has no float target_seconds"
+    assert seconds <= target <= seconds * TARGET_SLACK + 1
+
+
+@pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
+def test_every_moving_platform_travels_within_one_view(level: Path) -> None:
+    """Its whole box, from one end of its route to the other, fits in the 320 x 180 view, so
+    a player waiting at one end sees the platform wherever it is."""
+    for spec in load_level(level).platforms:
+        xs = [x for x, _ in spec.path.points]
+        ys = [y for _, y in spec.path.points]
+        assert max(xs) - min(xs) + spec.width_px <= VIEW_W_PX, spec
+        assert max(ys) - min(ys) + spec.height_px <= VIEW_H_PX, spec
 
 
 def _copy_of_first_level(folder: Path, lift_exit_px: int) -> Path:
