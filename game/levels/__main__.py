@@ -32,7 +32,7 @@ ticks of play: :data:`game.levels.reach.MAX_MEASURE_TICKS`).
 
 >>> from game.levels import LEVELS_DIR
 >>> check([LEVELS_DIR], Options(solve=False))  # doctest: +ELLIPSIS
-checked 6 map(s): all playable; the player jumps 2.8 tiles high and 3.6 tiles across ...
+checked 12 map(s): all playable; the player jumps 2.8 tiles high and 3.6 tiles across ...
 0
 """
 

@@ -121,7 +121,7 @@ SHEET_BACK = (20, 16, 32)
 
 
 def places_sheet(path: Path) -> None:
-    """The six shipped levels, one frame each, captioned ``N. Title (setting)``."""
+    """The shipped levels, one frame each, captioned ``N. Title (setting)``."""
     os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
     pygame.display.init()
     pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX))
