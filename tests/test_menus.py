@@ -12,6 +12,7 @@ import pytest
 from game.app.gamepad import BUTTON_A, BUTTON_B, BUTTON_START, STICK_Y_AXIS, StickEdges, pad_nav
 from game.app.menus import (
     LEVEL_SELECT,
+    OPTIONS,
     PAUSE_ITEMS,
     PLAY,
     QUIT,
@@ -99,16 +100,17 @@ def test_the_title_menu_moves_with_arrows_and_w_s_and_wraps_round() -> None:
     drive = Driver(entries())
     assert drive.menus.screen is Screen.TITLE and drive.lit_title == PLAY
     assert drive.send(key(pygame.K_DOWN)).lit_title == LEVEL_SELECT
+    assert drive.send(key(pygame.K_s)).lit_title == OPTIONS
     assert drive.send(key(pygame.K_s)).lit_title == QUIT
     assert drive.send(key(pygame.K_DOWN)).lit_title == PLAY
     assert drive.send(key(pygame.K_w)).lit_title == QUIT
-    assert drive.send(key(pygame.K_UP)).lit_title == LEVEL_SELECT
+    assert drive.send(key(pygame.K_UP)).lit_title == OPTIONS
 
 
 def test_the_title_menu_moves_with_the_dpad_and_one_stick_flick_is_one_step() -> None:
     drive = Driver(entries())
     assert drive.send(hat(0, -1), hat(0, 0)).lit_title == LEVEL_SELECT
-    assert drive.send(stick(0.3), stick(0.8), stick(1.0), stick(0.9)).lit_title == QUIT
+    assert drive.send(stick(0.3), stick(0.8), stick(1.0), stick(0.9)).lit_title == OPTIONS
     assert drive.send(stick(0.0), stick(-0.9)).lit_title == LEVEL_SELECT
     assert drive.send(hat(0, 1)).lit_title == PLAY
 
@@ -285,7 +287,7 @@ def test_a_whole_session_title_to_level_to_pause_to_title_to_quit() -> None:
     down_to_quit = (hat(0, -1),) * PAUSE_ITEMS.index(QUIT_TO_TITLE)
     quit_to_title = (button(BUTTON_START), *down_to_quit, button(BUTTON_A))
     assert drive.send(*quit_to_title).menus.screen is Screen.TITLE
-    drive.send(key(pygame.K_DOWN), key(pygame.K_RETURN))        # Quit
+    drive.send(key(pygame.K_DOWN), key(pygame.K_DOWN), key(pygame.K_RETURN))  # Quit
     assert drive.commands == [StartLevel(TWO), QuitGame()]
 
 

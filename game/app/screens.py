@@ -28,6 +28,7 @@ from collections.abc import Sequence
 import pygame
 
 from game.app.assets import Assets
+from game.app.goals import of_total
 from game.app.hud import (
     DIM_TEXT,
     GOLD,
@@ -39,13 +40,14 @@ from game.app.hud import (
     fit_text,
     translucent_rect,
 )
-from game.app.menus import PAUSE_ITEMS, TIMER, TITLE_ITEMS, LevelEntry, next_to_play
+from game.app.menus import OPTIONS, PAUSE_ITEMS, TIMER, TITLE_ITEMS, LevelEntry, next_to_play
 from game.sim.campaign import Campaign, totals
 from game.sim.sprite import ANIMATION_HZ, animation_index
 from game.sim.tuning import TICK_S
 
 GAME_TITLE = "Tile Hopper"
 LEVEL_SELECT_TITLE = "Level select"
+OPTIONS_HINT = "Volumes, keys, the ghost and the assists"
 
 DIM_MULTIPLIER = (96, 96, 120)  # the frame behind a menu is multiplied by this / 255
 PANEL_COLOR: Color = (12, 10, 28, 215)
@@ -90,7 +92,10 @@ COIN_FPS = 8
 LEVEL_SELECT_HEADING_Y_PX = 14  # centre of the letters of "Level select"
 LEVEL_NUMBER_W_PX = 16  # the "1." column of the level select
 BEST_TIME_W_PX = 44  # the best-time column, right-aligned
-BEST_COINS_W_PX = 28  # the coins column, right-aligned
+BEST_COINS_W_PX = 40  # the coins column ("12 of 15"), right-aligned
+MEDAL_W_PX = 9  # the medal column, after the best time
+MEDAL_RADIUS_PX = 3  # the medal drawn beside a best time within the level's target
+MEDAL_COLOR: Color = (255, 214, 90)
 LOCK_BODY_PX = (7, 5)  # the padlock's body, width and height
 LOCK_SHACKLE_H_PX = 3  # how far its shackle rises above the body
 
@@ -229,6 +234,8 @@ def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int
 
 def _title_hint(item: str, levels: Sequence[LevelEntry]) -> str:
     """What a title menu item leads to: the level Play starts, how many are unlocked."""
+    if item == OPTIONS:
+        return OPTIONS_HINT
     if not levels or item == TITLE_ITEMS[-1]:
         return ""
     if item == TITLE_ITEMS[0]:
@@ -302,6 +309,25 @@ def format_seconds(seconds: float | None) -> str:
     return NOT_YET if seconds is None else f"{seconds:.2f} s"
 
 
+def level_row_values(entry: LevelEntry) -> tuple[str, str]:
+    """A level select row's best time and coins, as shown: the coins of the level's total.
+
+    >>> from pathlib import Path
+    >>> level_row_values(LevelEntry(Path("a.tmx"), "A", True, 12.5, 3, coins_total=5))
+    ('12.50 s', '3 of 5')
+    >>> level_row_values(LevelEntry(Path("b.tmx"), "B", True, coins_total=4))[1] == (
+    ...     f"{NOT_YET} of 4")
+    True
+    """
+    return format_seconds(entry.best_s), of_total(entry.best_coins, entry.coins_total)
+
+
+def draw_medal(target: pygame.Surface, center: tuple[int, int]) -> None:
+    """The medal a best time within the level's target earns: a gold disc, outlined."""
+    pygame.draw.circle(target, OUTLINE_COLOR, center, MEDAL_RADIUS_PX + 1)
+    pygame.draw.circle(target, MEDAL_COLOR, center, MEDAL_RADIUS_PX)
+
+
 def draw_level_select(target: pygame.Surface, assets: Assets, frame: int,
                       levels: Sequence[LevelEntry], selected: int) -> None:
     """The campaign's levels in order: unlocked ones bright, locked ones grey with a padlock,
@@ -322,14 +348,15 @@ def draw_level_select(target: pygame.Surface, assets: Assets, frame: int,
 
     titles_w = max((font.size(entry.title)[0] for entry in levels), default=0)
     panel = pygame.Rect(0, top, _marker_w(font) + LEVEL_NUMBER_W_PX + titles_w + COLUMN_GAP_PX
-                        + BEST_TIME_W_PX + COLUMN_GAP_PX + BEST_COINS_W_PX + 3 * PANEL_PAD_PX,
+                        + BEST_TIME_W_PX + MEDAL_W_PX + COLUMN_GAP_PX + BEST_COINS_W_PX
+                        + 3 * PANEL_PAD_PX,
                         small.get_linesize() + shown * row_h + 2 * PANEL_PAD_PX - LINE_GAP_PX)
     panel.w = min(panel.w, width - 2 * PANEL_PAD_PX)
     panel.centerx = width // 2
     draw_panel(target, panel)
     inner_left, inner_right = panel.left + PANEL_PAD_PX, panel.right - PANEL_PAD_PX
     coins_right = inner_right - PANEL_PAD_PX
-    time_right = coins_right - BEST_COINS_W_PX - COLUMN_GAP_PX
+    time_right = coins_right - BEST_COINS_W_PX - COLUMN_GAP_PX - MEDAL_W_PX
     title_left = inner_left + _marker_w(font) + LEVEL_NUMBER_W_PX
     y = panel.top + PANEL_PAD_PX
     draw_text(target, small, "Level", (title_left, y), GOLD, outline=None,
@@ -352,9 +379,10 @@ def draw_level_select(target: pygame.Surface, assets: Assets, frame: int,
                                y + font.get_height() // 2), LOCKED_TEXT)
         title = fit_text(font, entry.title, time_right - BEST_TIME_W_PX - title_left)
         draw_text(target, font, title, (title_left, y), color)
-        draw_text(target, font, format_seconds(entry.best_s), (time_right, y), color,
-                  anchor="topright")
-        coins = NOT_YET if entry.best_coins is None else str(entry.best_coins)
+        best_time, coins = level_row_values(entry)
+        draw_text(target, font, best_time, (time_right, y), color, anchor="topright")
+        if entry.medal:
+            draw_medal(target, (time_right + MEDAL_W_PX // 2 + 1, y + font.get_height() // 2))
         draw_text(target, font, coins, (coins_right, y), color, anchor="topright")
         y += row_h
     _draw_level_select_footer(target, assets, levels, selected, panel.bottom + LINE_GAP_PX)
@@ -443,12 +471,14 @@ def draw_game_over(target: pygame.Surface, assets: Assets, campaign: Campaign) -
 
 
 WIN_HEADINGS = ("Level", "Time", "Coins", "Stomps")
+ASSIST_MARK = " (assist)"  # after the title of a level played with an assist on
 
 
 def win_rows(campaign: Campaign) -> list[tuple[str, str, str, str]]:
     """The win screen's table: one row per level finished, then the campaign's total."""
-    rows = [(r.title, format_seconds(r.ticks * TICK_S), f"{r.coins}/{r.coins_total}",
-             f"{r.stomps}/{r.enemies_total}") for r in campaign.results]
+    rows = [(f"{r.title}{ASSIST_MARK if r.assisted else ''}", format_seconds(r.ticks * TICK_S),
+             f"{r.coins}/{r.coins_total}", f"{r.stomps}/{r.enemies_total}")
+            for r in campaign.results]
     ticks, coins, coins_total, stomps, _score = totals(campaign.results)
     enemies = sum(r.enemies_total for r in campaign.results)
     rows.append(("Total", format_seconds(ticks * TICK_S), f"{coins}/{coins_total}",

@@ -36,13 +36,16 @@ from game.app.debug_overlay import PANEL_KEY, PanelMode
 from game.app.effects import Effects
 from game.app.frame import render_frame
 from game.app.gamepad import Gamepads, StickEdges, pad_in_use, pad_nav
+from game.app.ghosts import Replay, load_replay, recorded, save_ghost
 from game.app.menus import (
+    ChangeOption,
     Command,
     HeldOver,
     LevelEntry,
     Menus,
     Nav,
     QuitGame,
+    RebindKey,
     RestartLevel,
     Screen,
     StartLevel,
@@ -54,9 +57,11 @@ from game.app.menus import (
     level_entries,
     press,
 )
+from game.app.options import change
+from game.app.options_screen import draw_options
 from game.app.render import WorldRenderer
 from game.app.run import EXIT_OK, TARGET_FPS, Run, held_keys
-from game.app.saves import Attempt, CampaignMaps, Progress, progress_file
+from game.app.saves import Attempt, CampaignMaps, Finish, Progress, progress_file
 from game.app.screens import (
     RELOAD_FAILED,
     draw_error_banner,
@@ -66,7 +71,7 @@ from game.app.screens import (
     draw_title,
     draw_win,
 )
-from game.app.settings import Settings, settings_file
+from game.app.settings import DEFAULT_GAME_SPEED, Settings, key_name, settings_file
 from game.app.stepping import TickControl
 from game.app.watch import FileWatcher
 from game.levels import FIRST_LEVEL, LevelError
@@ -75,8 +80,9 @@ from game.sim.campaign import Campaign, Outcome
 from game.sim.fixed_step import FixedStep
 from game.sim.inputs import Actions
 from game.sim.sprite import ANIMATION_HZ
+from game.sim.world import World
 
-MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT)  # drawn instead of the world
+MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT, Screen.OPTIONS)  # instead of the world
 STILL_SCREENS = (Screen.PAUSED, Screen.ENDED)  # nothing on them moves by itself
 MENU_FPS = 30  # the title and the level select animate at this rate: smooth, half the work
 STILL_FPS = 10  # a still screen only waits for input, so it looks for it this often
@@ -167,6 +173,9 @@ class GameWindow:
         self.entries = level_entries(self.levels, self.progress)
         self.attempt = Attempt()
         self.banner: Banner | None = None
+        self.rebinding: str | None = None  # the action whose new key the next press sets
+        self.replay: Replay | None = None  # the ghost of the level in play, if it has one
+        self.replay_world: World | None = None  # the world the ghost was set up for
         self.dirty = True  # a still screen is drawn again after any event (see draw)
         self.last_shown: tuple[Menus, str | None, str | None, bool, PanelMode] | None = None
 
@@ -211,7 +220,9 @@ class GameWindow:
                 return self.quit()
             self.pads.handle(event)
             self.using_pad = pad_in_use(event, self.using_pad)
-            if event.type == pygame.KEYDOWN and event.key == pygame.K_F1:
+            if event.type == pygame.KEYDOWN and self.rebinding is not None:
+                self.rebind(event.key)
+            elif event.type == pygame.KEYDOWN and event.key == pygame.K_F1:
                 self.debug = not self.debug
                 self.run.campaign.measure.queries = self.debug  # the overlay draws the query log
             elif event.type == pygame.KEYDOWN and self.debug and event.key == PANEL_KEY:
@@ -230,10 +241,42 @@ class GameWindow:
 
     def toggle_fullscreen(self) -> None:
         """F11: fill the screen, or go back to the scaled, centred window; remembered."""
-        pygame.display.toggle_fullscreen()
         self.settings.fullscreen = not self.settings.fullscreen
+        self.show_fullscreen()
+        self.save_settings()
+
+    def show_fullscreen(self) -> None:
+        """Make the window match the fullscreen setting."""
+        pygame.display.toggle_fullscreen()
         if not self.settings.fullscreen:
             fit_window(self.window)
+
+    def change_option(self, command: ChangeOption) -> None:
+        """A press on an options row: change the setting, apply it at once, and save."""
+        before, self.settings = self.settings, change(self.settings, command.item,
+                                                      command.step)
+        self.audio.set_volume(self.settings.effects_volume, self.settings.music_volume)
+        if self.settings.fullscreen != before.fullscreen:
+            self.show_fullscreen()
+        self.apply_assist()
+        self.save_settings()
+
+    def apply_assist(self) -> None:
+        """Tell the campaign which assists are on (it marks the level it is playing)."""
+        self.run.campaign.set_assist(
+            no_damage=self.settings.no_damage,
+            slowed=self.settings.game_speed < DEFAULT_GAME_SPEED)
+
+    def rebind(self, key: int) -> None:
+        """The key pressed after choosing a key row: bind it (Esc keeps the old keys)."""
+        action, self.rebinding = self.rebinding, None
+        if action is None or key == pygame.K_ESCAPE:
+            return
+        problem = self.settings.rebind(action, key_name(key))
+        if problem is not None:
+            self.notice = f"Not rebound: {problem}."
+            return
+        self.keys = self.settings.key_codes()
         self.save_settings()
 
     def menu_press(self, nav: Nav) -> bool:
@@ -247,6 +290,10 @@ class GameWindow:
         if isinstance(command, ToggleTimer):
             self.settings.hud_timer = not self.settings.hud_timer
             self.save_settings()
+        elif isinstance(command, ChangeOption):
+            self.change_option(command)
+        elif isinstance(command, RebindKey):
+            self.rebinding = command.action
         elif command is not None and (problem := _obey(command, self.run)) is not None:
             self.menus, self.notice = before, problem  # stay on the menu and say why
         if self.menus.screen is Screen.PLAYING and before.screen is not Screen.PLAYING:
@@ -272,7 +319,8 @@ class GameWindow:
         """Music plays while playing, holds its place while paused, stops elsewhere."""
         if self.menus.screen is Screen.PLAYING:
             self.audio.start_music()
-        elif self.menus.screen is Screen.PAUSED:
+        elif self.menus.screen is Screen.PAUSED or (self.menus.screen is Screen.OPTIONS and
+                                                   self.menus.options_from is Screen.PAUSED):
             self.audio.pause_music()
         else:
             self.audio.stop_music()
@@ -286,7 +334,10 @@ class GameWindow:
         if self.menus.screen is not Screen.PLAYING or self.banner is not None:
             self.stepper.advance(0.0)
             return None
-        due = self.stepping.ticks_due(self.stepper, frame_s, overlay_on=self.debug)
+        self.apply_assist()  # the game speed assist: real time pays for fewer ticks
+        due = self.stepping.ticks_due(
+            self.stepper, frame_s * self.settings.game_speed / DEFAULT_GAME_SPEED,
+            overlay_on=self.debug)
         # Effects age in game time, by the ticks this frame runs: they stand still in
         # menus and while frozen (F2), and slow down at quarter speed (F4), as sprites do.
         self.effects.advance(due * self.stepper.tick_s)
@@ -312,23 +363,48 @@ class GameWindow:
         run = self.run
         self.attempt.before_tick(run.campaign)
         finishing = run.campaign.world
+        self.follow_ghost(finishing)
         try:
-            events = run.tick(self.held_over.filter(self.held()))
+            held = self.held_over.filter(self.held())
+            events = run.tick(held)
             self.effects.observe(finishing, events)
         except LevelError as error:  # the next level will not load: say so, go back
             self.menus, self.notice = Menus(), str(error)
             return False
         for tick_event in events:
             self.audio.play(tick_event.kind)
-        finish = self.attempt.after_tick(run.campaign, events)
+        if self.replay is not None:
+            self.replay.step()
+        finish = self.attempt.after_tick(run.campaign, events, held)
         if finish is not None:
-            kept = self.campaign_maps.kept(finish, finishing.level)  # None: not the campaign's
-            best = None if kept is None else self.progress.best_ticks.get(finish.level)
-            self.banner = Banner(run.campaign.results[-1], best, world=finishing)
-            if kept is not None:
-                self.progress.record(kept)
-                self.save_progress()
+            self.keep_finish(finish, finishing)
         return not (run.finished() or finish is not None)
+
+    def keep_finish(self, finish: Finish, finishing: World) -> None:
+        """Show a finished level's banner; keep a finish of the campaign's own maps in the
+        progress, and a best time without an assist as the level's ghost."""
+        kept = self.campaign_maps.kept(finish, finishing.level)  # None: not the campaign's
+        best = None if kept is None else self.progress.best_ticks.get(finish.level)
+        self.banner = Banner(self.run.campaign.results[-1], best, world=finishing)
+        if kept is None:
+            return
+        self.progress.record(kept)
+        self.save_progress()
+        faster = best is None or finish.ticks < best
+        if self.personal and faster and not finish.assisted:
+            ghost = recorded(self.attempt.inputs, finish.ticks, finishing.level.path)
+            if ghost is not None:
+                self.notice = save_ghost(ghost, finish.level) or self.notice
+
+    def follow_ghost(self, world: World) -> None:
+        """A level started (or started again): set up its ghost, if the player wants it and
+        the level has one made on this map."""
+        if world is self.replay_world:
+            return
+        self.replay_world, self.replay = world, None
+        if self.settings.ghost and self.personal and self.campaign_maps.holds(world.level.path):
+            self.replay, problem = load_replay(world.level, self.run.campaign.tuning)
+            self.notice = problem or self.notice
 
     # The level-end banner: a pause of the window only; the simulation waits for it.
     def advance_banner(self, frame_s: float) -> None:
@@ -364,9 +440,12 @@ class GameWindow:
                          update_ms=self.run.last_update_ms,
                          world=self.banner.world if self.banner is not None else None,
                          debug_lines=self.stepping.lines(campaign.ticks), panel=self.panel,
-                         timer=self.settings.hud_timer)
+                         timer=self.settings.hud_timer, ghost=self.ghost_shown())
         if self.banner is not None:
             self.banner.draw(target, self.assets)
+        if self.menus.screen is Screen.OPTIONS:
+            draw_options(target, self.assets, self.frame, self.settings,
+                         self.menus.options_item, self.rebinding)
         _draw_screen(target, self.assets, self.menus, self.entries, campaign, self.frame,
                      self.using_pad, self.settings.hud_timer)
         if self.reload_error is not None:
@@ -374,6 +453,12 @@ class GameWindow:
         elif self.notice is not None and self.menus.screen is not Screen.PLAYING:
             draw_error_banner(target, self.assets, self.notice)
         pygame.display.flip()
+
+
+    def ghost_shown(self) -> Replay | None:
+        """The ghost to draw: the level in play's, when the ghost is on (not under a banner)."""
+        on = self.settings.ghost and self.banner is None
+        return self.replay if on and self.replay_world is self.run.campaign.world else None
 
 
 def play_in_window(run: Run) -> int:
