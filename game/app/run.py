@@ -12,8 +12,9 @@ A frame in the window (:mod:`game.app.window`), in order:
    its panel compact, full or hidden), F11 (fullscreen), and
    menu presses from keys and pads (:mod:`game.app.menus`).
 2. **Ticks**: the fixed-step loop (:mod:`game.sim.fixed_step`) says how many 1/60 s ticks are
-   due (none while frozen, one per F3); each one reads the held actions (keyboard and pads
-   together, or the script) and calls ``Campaign.tick``.
+   due (none while frozen, one per F3, fewer at a game speed under 100 %, an assist);
+   each one reads the held actions (keyboard and pads together, or the script) and calls
+   ``Campaign.tick``.
 3. **Banner**: a finished level's tally counts up while the simulation waits for it.
 4. **Draw**: world, HUD, the debug overlay if on, then any screen (title, pause, ...).
 

@@ -9,9 +9,12 @@ The loop is :class:`GameWindow`: what lasts between frames, and one short method
 a frame, called in order by :meth:`GameWindow.play`: events, reload on save (``--watch``),
 music, ticks, the level-end banner, draw.
 
-Screens: the title (Play, Level select, Quit), the level select, playing, paused (Esc, P or
-Start; Resume, Restart level, Quit to title), game over and won (Enter or A returns to the
-title). Arrows, W/S, the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B
+Screens: the title (Play, Level select, Options, Quit), the level select, the options
+(:mod:`game.app.options`: applied at once and saved), playing, paused (Esc, P or Start;
+Resume, Restart level, Timer, Options, Quit to title), game over and won (Enter or A returns
+to the title). While a level is played, its ghost (:mod:`game.app.ghosts`) is stepped beside
+it, one tick for each of the player's, and a best run without an assist becomes the ghost.
+Arrows, W/S, the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B
 go back. A scripted run (``--inputs``) or one given ``--level`` skips the title; a scripted
 run ends at the end of the run, like a headless one.
 

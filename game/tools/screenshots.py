@@ -9,7 +9,9 @@ Two pictures cannot come from a headless run, which has neither the level-end ba
 pause of the window) nor the F5 key: ``level-end.png`` and ``debug-full-panel.png`` play the
 first level's winning script in this process and draw the frame with the window's own drawing
 code, :func:`game.app.frame.render_frame` (with the overlay's full panel, as after one press
-of F5) and :meth:`game.app.banner.Banner.draw`.
+of F5) and :meth:`game.app.banner.Banner.draw`. ``menus.png`` draws the options screen and the
+level select side by side with the window's own drawing code, for a player who has finished
+the first two levels (each played through its winning script).
 """
 
 from __future__ import annotations
@@ -29,8 +31,14 @@ from game.app.debug_overlay import PanelMode
 from game.app.files import save_image
 from game.app.frame import render_frame
 from game.app.hud import draw_text
+from game.app.menus import campaign_levels, level_entries
+from game.app.options import GAME_SPEED, OPTION_ITEMS
+from game.app.options_screen import draw_options
 from game.app.places import place_of
 from game.app.run import input_script
+from game.app.saves import Progress
+from game.app.screens import draw_level_select
+from game.app.settings import Settings
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.levels.closed_output import quiet_when_output_closes
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
@@ -148,6 +156,41 @@ def places_sheet(path: Path) -> None:
     pygame.display.quit()
 
 
+MENUS_FRAME = 40  # the title sky's animation frame in the picture of the menus
+MENUS_LEVELS_DONE = 2  # levels finished, each by its winning script, in that picture
+
+
+def menus_picture(path: Path) -> None:
+    """The options screen (the game speed row lit) beside the level select, for a player who
+    has finished the first levels by their winning scripts."""
+    os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+    pygame.display.init()
+    pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX))
+    assets = load_assets()
+    levels = campaign_levels(FIRST_LEVEL)
+    progress = Progress()
+    for info in levels[:MENUS_LEVELS_DONE]:
+        script = input_script(ROOT / "tests" / "scripts" / f"{info.path.stem}.txt")
+        campaign = Campaign(info.path, loader=lambda p: load_level(p, images=False))
+        while not campaign.results:
+            campaign.tick(script.held_at(campaign.ticks))
+        result = campaign.results[-1]
+        following = campaign.world.level.path if campaign.world.level.path != info.path else None
+        progress.complete_level(info.path.name, result.ticks, result.coins,
+                                None if following is None else following.name)
+    sheet = pygame.Surface((2 * VIEW_W_PX + 3 * SHEET_GAP_PX, VIEW_H_PX + 2 * SHEET_GAP_PX))
+    sheet.fill(SHEET_BACK)
+    frame = pygame.Surface((VIEW_W_PX, VIEW_H_PX))
+    settings = Settings(game_speed=80)
+    draw_options(frame, assets, MENUS_FRAME, settings, OPTION_ITEMS.index(GAME_SPEED))
+    sheet.blit(frame, (SHEET_GAP_PX, SHEET_GAP_PX))
+    draw_level_select(frame, assets, MENUS_FRAME, level_entries(levels, progress),
+                      MENUS_LEVELS_DONE)
+    sheet.blit(frame, (2 * SHEET_GAP_PX + VIEW_W_PX, SHEET_GAP_PX))
+    save_image(sheet, path)
+    pygame.display.quit()
+
+
 def main() -> None:
     SHOTS.mkdir(parents=True, exist_ok=True)
     for shot in SHOTS_TO_TAKE:
@@ -161,6 +204,8 @@ def main() -> None:
     full_panel_picture(SHOTS / "debug-full-panel.png")
     print(f"places.png: each shipped level at tick {PLACES_TICK} of its winning script")
     places_sheet(SHOTS / "places.png")
+    print(f"menus.png: the options and the level select after {MENUS_LEVELS_DONE} levels")
+    menus_picture(SHOTS / "menus.png")
 
 
 if __name__ == "__main__":
