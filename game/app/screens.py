@@ -410,7 +410,7 @@ def pause_labels(timer_on: bool) -> list[str]:
     """The pause menu's rows as shown: the timer's row says whether the timer is on.
 
     >>> pause_labels(False)
-    ['Resume', 'Restart level', 'Timer: off', 'Quit to title']
+    ['Resume', 'Restart level', 'Timer: off', 'Options', 'Quit to title']
     """
     return [f"{item}: {'on' if timer_on else 'off'}" if item == TIMER else item
             for item in PAUSE_ITEMS]

@@ -90,6 +90,7 @@ STILL_SCREENS = (Screen.PAUSED, Screen.ENDED)  # nothing on them moves by itself
 MENU_FPS = 30  # the title and the level select animate at this rate: smooth, half the work
 STILL_FPS = 10  # a still screen only waits for input, so it looks for it this often
 DESKTOP_SHARE_PERCENT = 90  # the window takes at most this much of the desktop each way
+NOT_REBOUND = "Not rebound: "  # before the reason a key chosen on the options is refused
 
 
 def frame_rate(screen: Screen) -> int:
@@ -277,8 +278,10 @@ class GameWindow:
             return
         problem = self.settings.rebind(action, key_name(key))
         if problem is not None:
-            self.notice = f"Not rebound: {problem}."
+            self.notice = f"{NOT_REBOUND}{problem}."
             return
+        if self.notice is not None and self.notice.startswith(NOT_REBOUND):
+            self.notice = None  # the last refusal is answered
         self.keys = self.settings.key_codes()
         self.save_settings()
 
