@@ -172,18 +172,25 @@ class GameWindow:
 
     def play(self) -> int:
         """Run frames until the window closes or a scripted run ends; the exit status."""
-        while True:
-            frame_s = self.clock.tick(frame_rate(self.menus.screen)) / 1000.0
-            self.frame += max(1, round(frame_s * ANIMATION_HZ))  # animations keep time at any rate
-            self.entries = level_entries(self.levels, self.progress)
-            if (status := self.events()) is not None:
-                return status
-            self.reload_on_save()
-            self.music()
-            if (status := self.ticks(frame_s)) is not None:
-                return status
-            self.advance_banner(frame_s)
-            self.draw()
+        while (status := self.one_frame()) is None:
+            pass
+        return status
+
+    def one_frame(self) -> int | None:
+        """Wait for the frame's time, then run its phases in order; the exit status if the
+        frame ends the game (``python -m game.bench.window`` times this call)."""
+        frame_s = self.clock.tick(frame_rate(self.menus.screen)) / 1000.0
+        self.frame += max(1, round(frame_s * ANIMATION_HZ))  # animations keep time at any rate
+        self.entries = level_entries(self.levels, self.progress)
+        if (status := self.events()) is not None:
+            return status
+        self.reload_on_save()
+        self.music()
+        if (status := self.ticks(frame_s)) is not None:
+            return status
+        self.advance_banner(frame_s)
+        self.draw()
+        return None
 
     def held(self) -> Actions:
         """What the keyboard and the pads hold right now."""

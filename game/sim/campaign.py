@@ -2,7 +2,9 @@
 
 Where it sits: above :class:`game.sim.world.World`. The world says what happened in a tick
 (coins, stomps, hurts, the exit); the campaign keeps the score and decides what follows:
-the next level (the map property ``next_level``), the win, or game over.
+the next level (the map property ``next_level``), the win, or game over. A campaign told
+to play a number of levels (``levels_to_play``) is won when it has finished that many, and
+loads no level after them.
 
 The score: each coin adds its ``value``, each stomp adds ``Tuning.stomp_points``. Each finished
 level leaves a :class:`LevelResult` (its time, coins of its total, stomps) in
@@ -62,8 +64,10 @@ class Campaign:
     """Plays levels in order from ``first_level`` until the last exit or the last life."""
 
     def __init__(self, first_level: Path, tuning: Tuning | None = None, *,
-                 loader: LevelLoader, measure: Measure | None = None) -> None:
+                 loader: LevelLoader, measure: Measure | None = None,
+                 levels_to_play: int | None = None) -> None:
         self.tuning = tuning or Tuning()
+        self.levels_to_play = levels_to_play  # None: every level next_level leads on to
         self.loader = loader
         # What every level's world writes down beyond the game (shared: turning the overlay's
         # query log on or off reaches the level in play and every level after it).
@@ -124,7 +128,7 @@ class Campaign:
             level.path, level.title, self.ticks - self.level_started_tick, self.level_coins,
             len(level.coins), self.level_stomps, len(level.enemies), self.level_score))
         next_level = level.next_level
-        if next_level is None:
+        if next_level is None or self.levels_completed == self.levels_to_play:
             self.outcome = Outcome.WON
         else:
             self.world = World(self.loader(next_level), self.tuning, measure=self.measure)
