@@ -162,7 +162,7 @@ class GameWindow:
         self.audio.set_volume(self.settings.effects_volume, self.settings.music_volume)
         self.pads, self.stick_edges, self.held_over = Gamepads(), StickEdges(), HeldOver()
         self.using_pad = False  # the title shows the controls of the device last pressed
-        self.levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks, bests each frame
+        self.levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks, bests each menu frame
         self.campaign_maps = CampaignMaps.of(info.path for info in self.levels)  # saved maps
         self.entries = level_entries(self.levels, self.progress)
         self.attempt = Attempt()
@@ -181,7 +181,8 @@ class GameWindow:
         frame ends the game (``python -m game.bench.window`` times this call)."""
         frame_s = self.clock.tick(frame_rate(self.menus.screen)) / 1000.0
         self.frame += max(1, round(frame_s * ANIMATION_HZ))  # animations keep time at any rate
-        self.entries = level_entries(self.levels, self.progress)
+        if self.menus.screen is not Screen.PLAYING:  # play reads no row of the level select
+            self.entries = level_entries(self.levels, self.progress)
         if (status := self.events()) is not None:
             return status
         self.reload_on_save()
