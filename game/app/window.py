@@ -13,7 +13,8 @@ Screens: the title (Play, Level select, Quit), the level select, playing, paused
 Start; Resume, Restart level, Quit to title), game over and won (Enter or A returns to the
 title). Arrows, W/S, the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B
 go back. A scripted run (``--inputs``) or one given ``--level`` skips the title; a scripted
-run ends at the end of the run, like a headless one.
+run ends at the end of the run, like a headless one (without ``--ticks``, when the script's
+level ends, unless ``--go-on``).
 
 The window opens at the largest whole-number scale of the 320x180 screen that takes at most
 :data:`DESKTOP_SHARE_PERCENT` of the desktop each way (room for a title bar and a taskbar),
