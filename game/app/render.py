@@ -39,7 +39,10 @@ What it teaches:
     are kept.
   * **Parallax**: the clouds and hills scroll at a fraction of the camera's speed, so they
     look far away, and repeat horizontally, so they never run out; the sky and its sun,
-    further still, do not move at all.
+    further still, do not move at all. The sky, the scenery and the pits' darkness depend
+    on the camera's whole-pixel place alone, so they are painted together into one opaque
+    backdrop, and painted again only when that place changes: a still camera costs one
+    plain blit a frame.
   * **The background must not lie about the ground.** Scenery that reaches below the floor
     looks like somewhere to land; so it ends at the level's floor line (:func:`floor_line_px`)
     and a pit shows only darkness below it.
@@ -395,6 +398,8 @@ class WorldRenderer:
         self.floor_px = 0  # the level's floor line, in map px
         self.pits: list[tuple[int, int]] = []  # where the floor line has no ground, in map px
         self.pit: pygame.Surface | None = None  # the place's pit darkness, made once a level
+        self.backdrop: pygame.Surface | None = None  # sky, scenery and pits, painted together
+        self.backdrop_at: tuple[int, int] | None = None  # the camera place it was painted for
 
     def draw(self, target: pygame.Surface, world: World, frame: int) -> None:
         """Paint the world view onto ``target`` (the 320x180 logical screen).
@@ -437,6 +442,7 @@ class WorldRenderer:
         self.floor_px = floor_line_px(level.grid)
         self.pits = pit_spans_px(level.grid, self.floor_px)
         self.pit = None
+        self.backdrop_at = None
 
     def _cast_new_sprites(self, world: World) -> None:
         """Add the world's sprites the group does not hold yet (all at first, then a squashed
@@ -468,6 +474,18 @@ class WorldRenderer:
         raise TypeError(f"no pictures for a {type(sprite).__name__}")
 
     def _draw_sky(self, target: pygame.Surface, world: World) -> None:
+        """The backdrop (:meth:`_paint_sky`), painted again only when the camera's whole-pixel
+        place or the screen's size has changed since it was last painted."""
+        at = screen_offset(world.camera)
+        size = target.get_size()
+        if self.backdrop is None or self.backdrop.get_size() != size:
+            self.backdrop, self.backdrop_at = pygame.Surface(size).convert(target), None
+        if at != self.backdrop_at:
+            self._paint_sky(self.backdrop, world)
+            self.backdrop_at = at
+        target.blit(self.backdrop, (0, 0))
+
+    def _paint_sky(self, target: pygame.Surface, world: World) -> None:
         """The place's sky and its one sun stand still (they are far away); its scenery in
         front scrolls by parallax, repeats, and stands on the floor line; below that line
         is the pit's darkness. None of it shakes with a stomp."""

@@ -16,7 +16,8 @@ to the title). While a level is played, its ghost (:mod:`game.app.ghosts`) is st
 it, one tick for each of the player's, and a best run without an assist becomes the ghost.
 Arrows, W/S, the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B
 go back. A scripted run (``--inputs``) or one given ``--level`` skips the title; a scripted
-run ends at the end of the run, like a headless one.
+run ends at the end of the run, like a headless one (without ``--ticks``, when the script's
+level ends, unless ``--go-on``).
 
 The window opens at the largest whole-number scale of the 320x180 screen that takes at most
 :data:`DESKTOP_SHARE_PERCENT` of the desktop each way (room for a title bar and a taskbar),
@@ -172,7 +173,7 @@ class GameWindow:
         self.audio.set_volume(self.settings.effects_volume, self.settings.music_volume)
         self.pads, self.stick_edges, self.held_over = Gamepads(), StickEdges(), HeldOver()
         self.using_pad = False  # the title shows the controls of the device last pressed
-        self.levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks, bests each frame
+        self.levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks, bests each menu frame
         self.campaign_maps = CampaignMaps.of(info.path for info in self.levels)  # saved maps
         self.entries = level_entries(self.levels, self.progress)
         self.attempt = Attempt()
@@ -185,18 +186,26 @@ class GameWindow:
 
     def play(self) -> int:
         """Run frames until the window closes or a scripted run ends; the exit status."""
-        while True:
-            frame_s = self.clock.tick(frame_rate(self.menus.screen)) / 1000.0
-            self.frame += max(1, round(frame_s * ANIMATION_HZ))  # animations keep time at any rate
+        while (status := self.one_frame()) is None:
+            pass
+        return status
+
+    def one_frame(self) -> int | None:
+        """Wait for the frame's time, then run its phases in order; the exit status if the
+        frame ends the game (``python -m game.bench.window`` times this call)."""
+        frame_s = self.clock.tick(frame_rate(self.menus.screen)) / 1000.0
+        self.frame += max(1, round(frame_s * ANIMATION_HZ))  # animations keep time at any rate
+        if self.menus.screen is not Screen.PLAYING:  # play reads no row of the level select
             self.entries = level_entries(self.levels, self.progress)
-            if (status := self.events()) is not None:
-                return status
-            self.reload_on_save()
-            self.music()
-            if (status := self.ticks(frame_s)) is not None:
-                return status
-            self.advance_banner(frame_s)
-            self.draw()
+        if (status := self.events()) is not None:
+            return status
+        self.reload_on_save()
+        self.music()
+        if (status := self.ticks(frame_s)) is not None:
+            return status
+        self.advance_banner(frame_s)
+        self.draw()
+        return None
 
     def held(self) -> Actions:
         """What the keyboard and the pads hold right now."""

@@ -2,7 +2,9 @@
 
 Where it sits: above :class:`game.sim.world.World`. The world says what happened in a tick
 (coins, stomps, hurts, the exit); the campaign keeps the score and decides what follows:
-the next level (the map property ``next_level``), the win, or game over.
+the next level (the map property ``next_level``), the win, or game over. A campaign told
+to play a number of levels (``levels_to_play``) is won when it has finished that many, and
+loads no level after them.
 
 The score: each coin adds its ``value``, each stomp adds ``Tuning.stomp_points``. Each finished
 level leaves a :class:`LevelResult` (its time, coins of its total, stomps) in
@@ -68,8 +70,9 @@ class Campaign:
 
     def __init__(self, first_level: Path, tuning: Tuning | None = None, *,
                  loader: LevelLoader, measure: Measure | None = None,
-                 no_damage: bool = False) -> None:
+                 no_damage: bool = False, levels_to_play: int | None = None) -> None:
         self.tuning = tuning or Tuning()
+        self.levels_to_play = levels_to_play  # None: every level next_level leads on to
         self.loader = loader
         # What every level's world writes down beyond the game (shared: turning the overlay's
         # query log on or off reaches the level in play and every level after it).
@@ -149,7 +152,7 @@ class Campaign:
             len(level.coins), self.level_stomps, len(level.enemies), self.level_score,
             self.level_assisted))
         next_level = level.next_level
-        if next_level is None:
+        if next_level is None or self.levels_completed == self.levels_to_play:
             self.outcome = Outcome.WON
         else:
             self.world = self._world(self.loader(next_level))
