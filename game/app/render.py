@@ -88,7 +88,6 @@ PLANK_EDGE_COLOR = (62, 36, 20)
 PLANK_TOP_PX = 2
 PLANK_BOLT_INSET_PX = 3
 PLANK_BOLT_GAP_PX = 8
-UNREACHED_TINT = (120, 120, 140)  # a checkpoint flag not yet touched is drawn greyed
 
 OPAQUE = 255  # surface alpha of a fully opaque layer
 ARGB_HEX_DIGITS = 8  # Tiled writes "#aarrggbb" when the background colour has alpha
@@ -205,13 +204,6 @@ def pit_spans_px(grid: TileGrid, floor_px: int) -> list[tuple[int, int]]:
         else:
             spans.append((left, left + grid.tile_w))
     return spans
-
-
-def greyed(image: pygame.Surface) -> pygame.Surface:
-    """A copy of ``image`` multiplied by :data:`UNREACHED_TINT`."""
-    copy = image.copy()
-    copy.fill(UNREACHED_TINT, special_flags=pygame.BLEND_RGB_MULT)
-    return copy
 
 
 def _visible_range(lo_px: float, hi_px: float, cell: int, count: int,
@@ -381,7 +373,7 @@ class WorldRenderer:
         self.enemy_strip = Strip.of(assets.enemy_frames)
         self.coin_strip = Strip.of(assets.coin_frames)
         self.exit_strip = Strip.of([assets.exit_image])
-        self.checkpoint_strip = Strip.of([greyed(assets.exit_image), assets.exit_image])
+        self.checkpoint_strip = Strip.of(assets.checkpoint_frames)  # unlit, then lit
         self.plank_strips: dict[tuple[int, int], Strip] = {}
         sky = assets.sky  # an opaque sky hides the level's colour: no need to fill
         opaque_px = pygame.mask.from_surface(sky, OPAQUE - 1).count()
