@@ -52,6 +52,7 @@ class Screen(Enum):
     PAUSED = "paused"
     CLEARED = "cleared"  # the level-end banner (game.app.banner), between two levels
     ENDED = "ended"  # game over or won; the campaign's outcome says which
+    CREDITS = "credits"  # after the win: who made what, rolling up
 
 
 class Nav(Enum):
@@ -87,6 +88,8 @@ PLAY, LEVEL_SELECT, QUIT = "Play", "Level select", "Quit"
 TITLE_ITEMS = (PLAY, LEVEL_SELECT, QUIT)
 RESUME, RESTART, TIMER, QUIT_TO_TITLE = "Resume", "Restart level", "Timer", "Quit to title"
 PAUSE_ITEMS = (RESUME, RESTART, TIMER, QUIT_TO_TITLE)
+RETRY = "Retry this level"
+GAME_OVER_ITEMS = (RETRY, QUIT_TO_TITLE)
 
 
 @dataclass(frozen=True)
@@ -102,6 +105,11 @@ class RestartLevel:
 
 
 @dataclass(frozen=True)
+class RetryLevel:
+    """After game over: the level lost starts again from its spawn with full lives."""
+
+
+@dataclass(frozen=True)
 class QuitGame:
     """Close the window."""
 
@@ -111,7 +119,7 @@ class ToggleTimer:
     """Show the HUD's timer if it is hidden, hide it if it is shown (a setting, saved)."""
 
 
-Command = StartLevel | RestartLevel | QuitGame | ToggleTimer
+Command = StartLevel | RestartLevel | RetryLevel | QuitGame | ToggleTimer
 
 
 @dataclass(frozen=True)
@@ -147,6 +155,8 @@ class Menus:
     title_item: int = 0  # index into TITLE_ITEMS
     level_item: int = 0  # index into the level select's entries
     pause_item: int = 0  # index into PAUSE_ITEMS
+    game_over_item: int = 0  # index into GAME_OVER_ITEMS
+    won: bool = False  # on Screen.ENDED: the win (then the credits), else game over
 
 
 def outline(path: Path) -> Level:
@@ -202,9 +212,10 @@ def press(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]) -> tuple[Menus, 
     return _SCREENS[menus.screen](menus, nav, levels)
 
 
-def ended(menus: Menus) -> Menus:
-    """The run is over (won or lost): show the result until it is confirmed."""
-    return replace(menus, screen=Screen.ENDED)
+def ended(menus: Menus, won: bool = False) -> Menus:
+    """The run is over (won or lost): show the result until it is confirmed; game over
+    opens on Retry this level."""
+    return replace(menus, screen=Screen.ENDED, won=won, game_over_item=0)
 
 
 def cleared(menus: Menus) -> Menus:
@@ -284,11 +295,33 @@ def _cleared(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
 
 def _ended(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
            ) -> tuple[Menus, Command | None]:
+    """The win gives way to the credits. Game over retries the level lost, or goes back to
+    the title (Back does too)."""
+    if menus.won:
+        if nav in (Nav.CONFIRM, Nav.BACK):
+            return replace(menus, screen=Screen.CREDITS), None
+        return menus, None
+    if nav is Nav.BACK:
+        return _to_title(menus), None
+    if nav is not Nav.CONFIRM:
+        return replace(menus, game_over_item=_step(menus.game_over_item, nav,
+                                                   len(GAME_OVER_ITEMS))), None
+    if GAME_OVER_ITEMS[menus.game_over_item] == RETRY:
+        return replace(menus, screen=Screen.PLAYING), RetryLevel()
+    return _to_title(menus), None
+
+
+def _credits(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
+             ) -> tuple[Menus, Command | None]:
+    if nav in (Nav.CONFIRM, Nav.BACK):
+        return _to_title(menus), None
+    return menus, None
+
+
+def _to_title(menus: Menus) -> Menus:
     """Back to the title with Play lit, whatever was lit when this run began: a second
     Enter plays on (from the first level not yet finished)."""
-    if nav in (Nav.CONFIRM, Nav.BACK):
-        return replace(menus, screen=Screen.TITLE, title_item=TITLE_ITEMS.index(PLAY)), None
-    return menus, None
+    return replace(menus, screen=Screen.TITLE, title_item=TITLE_ITEMS.index(PLAY))
 
 
 _SCREENS: dict[Screen, Callable[[Menus, Nav, Sequence[LevelEntry]],
@@ -299,6 +332,7 @@ _SCREENS: dict[Screen, Callable[[Menus, Nav, Sequence[LevelEntry]],
     Screen.PAUSED: _paused,
     Screen.CLEARED: _cleared,
     Screen.ENDED: _ended,
+    Screen.CREDITS: _credits,
 }
 
 

@@ -7,13 +7,15 @@ feeds and obeys); how pads become actions and menu moves is in :mod:`game.app.ga
 
 The loop is :class:`GameWindow`: what lasts between frames, and one short method per phase of
 a frame, called in order by :meth:`GameWindow.play`: events, reload on save (``--watch``),
-music, ticks, the level-end banner, draw.
+music (the title's track in the menus, the place's in play, a jingle when the run ends),
+ticks, the level-end banner, draw.
 
 Screens: the title (Play, Level select, Quit), the level select, playing, paused (Esc, P or
-Start; Resume, Restart level, Quit to title), game over and won (Enter or A returns to the
-title). Arrows, W/S, the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B
-go back. A scripted run (``--inputs``) or one given ``--level`` skips the title; a scripted
-run ends at the end of the run, like a headless one.
+Start; Resume, Restart level, Quit to title), game over (Retry this level, Quit to title) and
+won (Enter or A rolls the credits, and Enter or A again returns to the title). Arrows, W/S,
+the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B go back. A scripted
+run (``--inputs``) or one given ``--level`` skips the title; a scripted run ends at the end of
+the run, like a headless one.
 
 The window opens at the largest whole-number scale of the 320x180 screen that takes at most
 :data:`DESKTOP_SHARE_PERCENT` of the desktop each way (room for a title bar and a taskbar),
@@ -30,7 +32,7 @@ import pygame
 from pygame._sdl2.video import WINDOWPOS_CENTERED, Window
 
 from game.app.assets import Assets, load_assets
-from game.app.audio import Audio
+from game.app.audio import TITLE_TRACK, Audio
 from game.app.banner import Banner
 from game.app.debug_overlay import PANEL_KEY, PanelMode
 from game.app.effects import Effects
@@ -44,6 +46,7 @@ from game.app.menus import (
     Nav,
     QuitGame,
     RestartLevel,
+    RetryLevel,
     Screen,
     StartLevel,
     ToggleTimer,
@@ -54,11 +57,13 @@ from game.app.menus import (
     level_entries,
     press,
 )
+from game.app.places import place_of
 from game.app.render import WorldRenderer
 from game.app.run import EXIT_OK, TARGET_FPS, Run, held_keys
 from game.app.saves import Attempt, CampaignMaps, Progress, progress_file
 from game.app.screens import (
     RELOAD_FAILED,
+    draw_credits,
     draw_error_banner,
     draw_game_over,
     draw_level_select,
@@ -76,7 +81,7 @@ from game.sim.fixed_step import FixedStep
 from game.sim.inputs import Actions
 from game.sim.sprite import ANIMATION_HZ
 
-MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT)  # drawn instead of the world
+MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT, Screen.CREDITS)  # instead of the world
 STILL_SCREENS = (Screen.PAUSED, Screen.ENDED)  # nothing on them moves by itself
 MENU_FPS = 30  # the title and the level select animate at this rate: smooth, half the work
 STILL_FPS = 10  # a still screen only waits for input, so it looks for it this often
@@ -169,6 +174,7 @@ class GameWindow:
         self.banner: Banner | None = None
         self.dirty = True  # a still screen is drawn again after any event (see draw)
         self.last_shown: tuple[Menus, str | None, str | None, bool, PanelMode] | None = None
+        self.credits_from = 0  # self.frame when the credits came up: they roll from there
 
     def play(self) -> int:
         """Run frames until the window closes or a scripted run ends; the exit status."""
@@ -251,6 +257,8 @@ class GameWindow:
             self.menus, self.notice = before, problem  # stay on the menu and say why
         if self.menus.screen is Screen.PLAYING and before.screen is not Screen.PLAYING:
             self.held_over.begin(self.held())
+        if self.menus.screen is Screen.CREDITS and before.screen is not Screen.CREDITS:
+            self.credits_from = self.frame
         return False
 
     def reload_on_save(self) -> None:
@@ -269,11 +277,16 @@ class GameWindow:
                 self.reload_error = str(error)
 
     def music(self) -> None:
-        """Music plays while playing, holds its place while paused, stops elsewhere."""
-        if self.menus.screen is Screen.PLAYING:
-            self.audio.start_music()
-        elif self.menus.screen is Screen.PAUSED:
+        """The place's music plays while playing and holds its place while paused; the
+        title's plays in the menus and the credits; none under the level-end banner or an
+        ending (whose jingle plays as it comes up, :meth:`end_run`)."""
+        screen = self.menus.screen
+        if screen is Screen.PLAYING:
+            self.audio.start_music(place_of(self.run.campaign.world.level.properties).name)
+        elif screen is Screen.PAUSED:
             self.audio.pause_music()
+        elif screen in MENU_SCREENS:
+            self.audio.start_music(TITLE_TRACK)
         else:
             self.audio.stop_music()
 
@@ -303,8 +316,15 @@ class GameWindow:
         if self.banner is not None:
             self.menus = cleared(self.menus)
         elif run.finished():
-            self.menus = ended(self.menus)
+            self.end_run()
         return None
+
+    def end_run(self) -> None:
+        """The run is over: its ending comes up (the win, or game over), with its jingle."""
+        won = self.run.campaign.outcome is Outcome.WON
+        self.menus = ended(self.menus, won=won)
+        self.audio.stop_music()
+        self.audio.play("win" if won else "game-over")
 
     def tick(self) -> bool:
         """One tick with what is held; False when no more ticks should run this frame (the
@@ -342,7 +362,7 @@ class GameWindow:
             if self.menus.screen is Screen.CLEARED:
                 self.menus = replace(self.menus, screen=Screen.PLAYING)
             if self.run.finished():
-                self.menus = ended(self.menus)
+                self.end_run()
             elif self.menus.screen is Screen.PLAYING:
                 self.held_over.begin(self.held())
 
@@ -367,7 +387,8 @@ class GameWindow:
                          timer=self.settings.hud_timer)
         if self.banner is not None:
             self.banner.draw(target, self.assets)
-        _draw_screen(target, self.assets, self.menus, self.entries, campaign, self.frame,
+        frame = self.frame - (self.credits_from if self.menus.screen is Screen.CREDITS else 0)
+        _draw_screen(target, self.assets, self.menus, self.entries, campaign, frame,
                      self.using_pad, self.settings.hud_timer)
         if self.reload_error is not None:
             draw_error_banner(target, self.assets, RELOAD_FAILED + self.reload_error)
@@ -393,6 +414,8 @@ def _obey(command: Command, run: Run) -> str | None:
             run.campaign = Campaign(command.level, run.campaign.tuning, loader=run.campaign.loader)
         elif isinstance(command, RestartLevel):
             run.campaign.restart_level()
+        elif isinstance(command, RetryLevel):
+            run.campaign.retry_level()
     except LevelError as error:
         return str(error)
     return None
@@ -412,5 +435,7 @@ def _draw_screen(target: pygame.Surface, assets: Assets, menus: Menus,
         if campaign.outcome is Outcome.WON:
             draw_win(target, assets, campaign)
         else:
-            draw_game_over(target, assets, campaign)
+            draw_game_over(target, assets, campaign, menus.game_over_item)
+    elif menus.screen is Screen.CREDITS:
+        draw_credits(target, assets, frame)
 
