@@ -187,7 +187,9 @@ def floor_line_px(grid: TileGrid) -> int:
 
 def pit_spans_px(grid: TileGrid, floor_px: int) -> list[tuple[int, int]]:
     """The stretches of the map, ``(left, right)`` in px, with no solid tile at the floor
-    line: the pits, where the background shows darkness below that line.
+    line or anywhere below it: the pits, where the background shows darkness below that
+    line. Ground lower than the floor line (a lowered floor, a dip) is somewhere to land,
+    not a pit, and keeps the scenery behind it.
 
     >>> grid = TileGrid(cols=4, rows=4, tile_w=16, tile_h=16)
     >>> pit_spans_px(grid, 48)
@@ -196,7 +198,8 @@ def pit_spans_px(grid: TileGrid, floor_px: int) -> list[tuple[int, int]]:
     row = min(floor_px // grid.tile_h, grid.rows - 1)
     spans: list[tuple[int, int]] = []
     for col in range(grid.cols):
-        if any(shape.kind is TileKind.SOLID for shape in grid.shapes_at(col, row)):
+        if any(shape.kind is TileKind.SOLID for below in range(row, grid.rows)
+               for shape in grid.shapes_at(col, below)):
             continue
         left = col * grid.tile_w
         if spans and spans[-1][1] == left:
@@ -477,6 +480,10 @@ class WorldRenderer:
             target.blit(scenery, (x, floor_y - SCENERY_FLOOR_ROW))
             x += scenery_w
         height, width = target.get_height(), target.get_width()
+        under = floor_y - SCENERY_FLOOR_ROW + scenery.get_height()  # the scenery's bottom
+        if under < height:  # a floor lowered far below the line: the scenery goes on down
+            target.fill(scenery.get_at((0, scenery.get_height() - 1)),
+                        (0, under, width, height - under))
         if floor_y >= height or not self.pits:
             return
         if self.pit is None or self.pit.get_width() != width:
