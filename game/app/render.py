@@ -8,7 +8,8 @@ A frame, in order (:meth:`WorldRenderer.draw`):
 
 1. **Sky**: the level's place (:mod:`game.app.places`, the map property ``setting``) gives
    the still sky with its sun, then the scenery, scrolled by parallax and standing on the
-   level's floor line, and below that line the darkness a pit falls into.
+   level's floor line, and below that line the darkness a pit falls into; over it, the
+   moving platforms' tracks (:mod:`game.app.tracks`).
 2. **Tile layers behind the sprites**, each from its cache of pre-drawn chunks.
 3. **Sprites**: every sprite's ``update(frame)`` picks its picture, then one
    :class:`CameraGroup` blits each ``image`` at its ``rect`` minus the camera, in the
@@ -65,6 +66,7 @@ from game.app.places import (
     place_of,
     recolour,
 )
+from game.app.tracks import Tracks
 from game.collision.shapes import TileKind
 from game.collision.tile_grid import TileGrid
 from game.sim.camera import Camera
@@ -390,6 +392,7 @@ class WorldRenderer:
         self.floor_px = 0  # the level's floor line, in map px
         self.pits: list[tuple[int, int]] = []  # where the floor line has no ground, in map px
         self.pit: pygame.Surface | None = None  # the place's pit darkness, made once a level
+        self.tracks = Tracks(())  # the moving platforms' routes, made once a level
 
     def draw(self, target: pygame.Surface, world: World, frame: int) -> None:
         """Paint the world view onto ``target`` (the 320x180 logical screen).
@@ -402,8 +405,9 @@ class WorldRenderer:
         if self.effects is not None:  # a stomp's shake: the world swings, the sky stays
             shake_x, shake_y = self.effects.shake_offset()
             offset = (offset[0] - shake_x, offset[1] - shake_y)
-        # 1. Sky.
+        # 1. Sky, and the platforms' tracks over it.
         self._draw_sky(target, world)
+        self.tracks.draw(target, offset)
         # 2. Tile layers behind the sprites.
         for cache in self.back:
             cache.draw(target, offset, frame)
@@ -432,6 +436,7 @@ class WorldRenderer:
         self.floor_px = floor_line_px(level.grid)
         self.pits = pit_spans_px(level.grid, self.floor_px)
         self.pit = None
+        self.tracks = Tracks(level.platforms)
 
     def _cast_new_sprites(self, world: World) -> None:
         """Add the world's sprites the group does not hold yet (all at first, then a squashed
