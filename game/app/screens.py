@@ -103,6 +103,7 @@ LOCK_SHACKLE_H_PX = 3  # how far its shackle rises above the body
 
 CREDITS_SCROLL_PX_S = 16  # how fast the credits roll up the screen
 CREDITS_TOP_PX = 34  # the rolling lines pass under the heading and vanish above this row
+CREDITS_BOTTOM_GAP_PX = 34  # they rise from this far above the bottom, over the runners
 CREDITS_STOP_ROW_PX = 96  # the last line stops rising when it reaches this row
 CREDITS_ROLE_GAP_PX = 6  # between one credit and the next
 CREDITS = (  # (what, who or how): the roll after the win, top to bottom
@@ -543,20 +544,21 @@ def draw_credits(target: pygame.Surface, assets: Assets, frame: int) -> None:
     lines = credits_lines(font, width - 4 * PANEL_PAD_PX)
     roll_h = sum(line_h + gap for _, _, gap in lines) - line_h  # to the last line's top
     risen = math.floor(frame * CREDITS_SCROLL_PX_S / ANIMATION_HZ)
-    y = max(height - risen, CREDITS_STOP_ROW_PX - roll_h)
+    bottom = height - CREDITS_BOTTOM_GAP_PX
+    y = max(bottom - risen, CREDITS_STOP_ROW_PX - roll_h)
     clip = target.get_clip()
-    target.set_clip(pygame.Rect(0, CREDITS_TOP_PX, width, height - CREDITS_TOP_PX))
+    target.set_clip(pygame.Rect(0, CREDITS_TOP_PX, width, bottom - CREDITS_TOP_PX))
     for text, color, gap in lines:
         y += gap
-        if CREDITS_TOP_PX - line_h < y < height:
+        if CREDITS_TOP_PX - line_h < y < bottom:
             draw_text(target, font, text, (width // 2, y), color, anchor="midtop")
         y += line_h
+    if y - line_h <= CREDITS_STOP_ROW_PX:  # the roll has stopped: say how to leave
+        draw_text(target, font, "Press Enter or A", (width // 2, y + line_h), GOLD,
+                  anchor="midtop")
     target.set_clip(clip)
     draw_heading(target, assets, "Credits", (width // 2, HEADING_RULE_GAP_PX))
     _draw_runners(target, assets, frame)
-    if y - line_h <= CREDITS_STOP_ROW_PX:  # the roll has stopped: say how to leave
-        draw_text(target, font, "Press Enter or A", (width // 2, height - 2 * line_h), GOLD,
-                  anchor="midtop")
 
 
 def wrap_text(font: pygame.font.Font, text: str, max_w: int) -> list[str]:
