@@ -18,6 +18,7 @@ from game.app.menus import (
     QUIT,
     QUIT_TO_TITLE,
     RESTART,
+    RETRY,
     TITLE_ITEMS,
     HeldOver,
     LevelEntry,
@@ -25,6 +26,7 @@ from game.app.menus import (
     Menus,
     QuitGame,
     RestartLevel,
+    RetryLevel,
     Screen,
     StartLevel,
     campaign_levels,
@@ -250,11 +252,30 @@ def test_the_pause_menu_opens_on_resume_every_time() -> None:
     assert drive.lit_pause == PAUSE_ITEMS[0]
 
 
-def test_the_end_of_a_run_waits_for_enter_or_a_then_shows_the_title() -> None:
+def test_game_over_waits_for_enter_or_a_and_quit_to_title_shows_the_title() -> None:
     for confirm in (key(pygame.K_RETURN), button(BUTTON_A)):
         drive = Driver(entries(), ended(Menus(Screen.PLAYING)))
         assert drive.menus.screen is Screen.ENDED
         assert drive.send(key(pygame.K_DOWN), confirm).menus.screen is Screen.TITLE
+        assert drive.commands == []
+
+
+def test_game_over_opens_on_retry_this_level_which_plays_the_level_again() -> None:
+    for confirm in (key(pygame.K_RETURN), button(BUTTON_A)):
+        drive = Driver(entries(), ended(Menus(Screen.PLAYING)))
+        assert RETRY == "Retry this level"
+        assert drive.send(confirm).menus.screen is Screen.PLAYING
+        assert drive.commands == [RetryLevel()]
+
+
+def test_the_win_rolls_the_credits_then_enter_or_a_shows_the_title() -> None:
+    for confirm in (key(pygame.K_RETURN), button(BUTTON_A)):
+        drive = Driver(entries(), ended(Menus(Screen.PLAYING), won=True))
+        assert drive.send(key(pygame.K_DOWN)).menus.screen is Screen.ENDED
+        assert drive.send(confirm).menus.screen is Screen.CREDITS
+        assert drive.send(key(pygame.K_DOWN)).menus.screen is Screen.CREDITS
+        assert drive.send(confirm).menus.screen is Screen.TITLE
+        assert drive.menus.title_item == TITLE_ITEMS.index(PLAY) and drive.commands == []
 
 
 def test_enter_after_a_game_over_reached_from_the_level_select_plays_on() -> None:
@@ -264,7 +285,8 @@ def test_enter_after_a_game_over_reached_from_the_level_select_plays_on() -> Non
     drive.send(key(pygame.K_DOWN), key(pygame.K_RETURN), key(pygame.K_RETURN))  # select, play
     assert drive.menus.screen is Screen.PLAYING
     drive.menus = ended(drive.menus)                          # the last life is lost
-    drive.send(key(pygame.K_RETURN), key(pygame.K_RETURN))     # to the title, then Enter
+    drive.send(key(pygame.K_DOWN), key(pygame.K_RETURN))       # Quit to title
+    drive.send(key(pygame.K_RETURN))                           # then Enter
     assert drive.menus.screen is Screen.PLAYING
     assert drive.commands == [StartLevel(TWO), StartLevel(TWO)]
 

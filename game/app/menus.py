@@ -55,6 +55,7 @@ class Screen(Enum):
     CLEARED = "cleared"  # the level-end banner (game.app.banner), between two levels
     ENDED = "ended"  # game over or won; the campaign's outcome says which
     OPTIONS = "options"  # volumes, timer, fullscreen, ghost, keys, assists (game.app.options)
+    CREDITS = "credits"  # after the win: who made what, rolling up
 
 
 class Nav(Enum):
@@ -94,6 +95,8 @@ PLAY, LEVEL_SELECT, OPTIONS, QUIT = "Play", "Level select", "Options", "Quit"
 TITLE_ITEMS = (PLAY, LEVEL_SELECT, OPTIONS, QUIT)
 RESUME, RESTART, TIMER, QUIT_TO_TITLE = "Resume", "Restart level", "Timer", "Quit to title"
 PAUSE_ITEMS = (RESUME, RESTART, TIMER, OPTIONS, QUIT_TO_TITLE)
+RETRY = "Retry this level"
+GAME_OVER_ITEMS = (RETRY, QUIT_TO_TITLE)
 
 
 @dataclass(frozen=True)
@@ -106,6 +109,11 @@ class StartLevel:
 @dataclass(frozen=True)
 class RestartLevel:
     """Start the level in play again from its spawn."""
+
+
+@dataclass(frozen=True)
+class RetryLevel:
+    """After game over: the level lost starts again from its spawn with full lives."""
 
 
 @dataclass(frozen=True)
@@ -133,7 +141,8 @@ class RebindKey:
     action: str
 
 
-Command = StartLevel | RestartLevel | QuitGame | ToggleTimer | ChangeOption | RebindKey
+Command = (StartLevel | RestartLevel | RetryLevel | QuitGame | ToggleTimer | ChangeOption
+           | RebindKey)
 
 
 @dataclass(frozen=True)
@@ -175,6 +184,8 @@ class Menus:
     pause_item: int = 0  # index into PAUSE_ITEMS
     options_item: int = 0  # index into game.app.options.OPTION_ITEMS
     options_from: Screen = Screen.TITLE  # where Back on the options screen returns to
+    game_over_item: int = 0  # index into GAME_OVER_ITEMS
+    won: bool = False  # on Screen.ENDED: the win (then the credits), else game over
 
 
 def outline(path: Path) -> Level:
@@ -232,9 +243,10 @@ def press(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]) -> tuple[Menus, 
     return _SCREENS[menus.screen](menus, nav, levels)
 
 
-def ended(menus: Menus) -> Menus:
-    """The run is over (won or lost): show the result until it is confirmed."""
-    return replace(menus, screen=Screen.ENDED)
+def ended(menus: Menus, won: bool = False) -> Menus:
+    """The run is over (won or lost): show the result until it is confirmed; game over
+    opens on Retry this level."""
+    return replace(menus, screen=Screen.ENDED, won=won, game_over_item=0)
 
 
 def cleared(menus: Menus) -> Menus:
@@ -318,13 +330,33 @@ def _cleared(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
 
 def _ended(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
            ) -> tuple[Menus, Command | None]:
-    """Back to the title with Play lit, whatever was lit when this run began: a second
-    Enter plays on (from the first level not yet finished)."""
+    """The win gives way to the credits. Game over retries the level lost, or goes back to
+    the title (Back does too)."""
+    if menus.won:
+        if nav in (Nav.CONFIRM, Nav.BACK):
+            return replace(menus, screen=Screen.CREDITS), None
+        return menus, None
+    if nav is Nav.BACK:
+        return _to_title(menus), None
+    if nav is not Nav.CONFIRM:
+        return replace(menus, game_over_item=_step(menus.game_over_item, nav,
+                                                   len(GAME_OVER_ITEMS))), None
+    if GAME_OVER_ITEMS[menus.game_over_item] == RETRY:
+        return replace(menus, screen=Screen.PLAYING), RetryLevel()
+    return _to_title(menus), None
+
+
+def _credits(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
+             ) -> tuple[Menus, Command | None]:
     if nav in (Nav.CONFIRM, Nav.BACK):
-        return replace(menus, screen=Screen.TITLE, title_item=TITLE_ITEMS.index(PLAY)), None
+        return _to_title(menus), None
     return menus, None
 
 
+def _to_title(menus: Menus) -> Menus:
+    """Back to the title with Play lit, whatever was lit when this run began: a second
+    Enter plays on (from the first level not yet finished)."""
+    return replace(menus, screen=Screen.TITLE, title_item=TITLE_ITEMS.index(PLAY))
 def _options(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
              ) -> tuple[Menus, Command | None]:
     """Up and down pick a row; left and right change its value, Enter changes it up (a key
@@ -351,6 +383,7 @@ _SCREENS: dict[Screen, Callable[[Menus, Nav, Sequence[LevelEntry]],
     Screen.CLEARED: _cleared,
     Screen.ENDED: _ended,
     Screen.OPTIONS: _options,
+    Screen.CREDITS: _credits,
 }
 
 

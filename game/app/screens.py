@@ -1,4 +1,4 @@
-"""Full-screen states: the title menu, the level select, pause, game over and the win screen.
+"""Full-screen states: the title menu, the level select, pause, game over, the win and credits.
 
 Where it sits: the app draws one of these instead of (title, level select) or on top of
 (pause, game over, win) the world and the HUD, on the same 320x180 logical screen. They read
@@ -40,7 +40,15 @@ from game.app.hud import (
     fit_text,
     translucent_rect,
 )
-from game.app.menus import OPTIONS, PAUSE_ITEMS, TIMER, TITLE_ITEMS, LevelEntry, next_to_play
+from game.app.menus import (
+    GAME_OVER_ITEMS,
+    OPTIONS,
+    PAUSE_ITEMS,
+    TIMER,
+    TITLE_ITEMS,
+    LevelEntry,
+    next_to_play,
+)
 from game.sim.campaign import Campaign, totals
 from game.sim.sprite import ANIMATION_HZ, animation_index
 from game.sim.tuning import TICK_S
@@ -98,6 +106,22 @@ MEDAL_RADIUS_PX = 3  # the medal drawn beside a best time within the level's tar
 MEDAL_COLOR: Color = (255, 214, 90)
 LOCK_BODY_PX = (7, 5)  # the padlock's body, width and height
 LOCK_SHACKLE_H_PX = 3  # how far its shackle rises above the body
+
+CREDITS_SCROLL_PX_S = 16  # how fast the credits roll up the screen
+CREDITS_TOP_PX = 34  # the rolling lines pass under the heading and vanish above this row
+CREDITS_BOTTOM_GAP_PX = 34  # they rise from this far above the bottom, over the runners
+CREDITS_STOP_ROW_PX = 96  # the last line stops rising when it reaches this row
+CREDITS_ROLE_GAP_PX = 6  # between one credit and the next
+CREDITS = (  # (what, who or how): the roll after the win, top to bottom
+    ("Tile Hopper", "a platformer about collisions"),
+    ("Code", "Python, with pygame and pytmx"),
+    ("Levels", "drawn in Tiled, checked by the game's own solver"),
+    ("Art", "drawn pixel by pixel by game/tools/art.py"),
+    ("Font", "drawn by game/tools/pixel_font.py"),
+    ("Music and sounds", "synthesised by game/tools/synth.py"),
+    ("Licence", "every picture and sound is CC0"),
+)
+CREDITS_LAST = "Thank you for playing!"
 
 CONTROLS = (  # action, keyboard, pad (an Xbox-style pad with the default buttons)
     ("Move", "Arrows / WASD", "Stick / D-pad"),
@@ -435,7 +459,9 @@ def draw_pause(target: pygame.Surface, assets: Assets, selected: int, *,
 
 
 def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign,
-                 heading: str) -> None:
+                 heading: str, choices: Sequence[str] = (), selected: int = 0) -> None:
+    """The run's figures in a panel under ``heading``, then ``choices`` as a menu with
+    ``choices[selected]`` lit, or, without choices, what to press."""
     dim(target)
     width, height = target.get_size()
     lines = (
@@ -449,9 +475,11 @@ def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign,
     line_h = font.get_linesize() + LINE_GAP_PX
     head_h = heading_h(assets)
     text_w = max(font.size(label)[0] + font.size(value)[0] for label, value in lines)
-    panel_w = max(text_w + COLUMN_GAP_PX, assets.big_font.size(heading)[0]) + 4 * PANEL_PAD_PX
+    menu_w, menu_h = menu_size(font, choices) if choices else (0, line_h)
+    panel_w = max(text_w + COLUMN_GAP_PX, menu_w,
+                  assets.big_font.size(heading)[0]) + 4 * PANEL_PAD_PX
     panel = pygame.Rect(0, 0, panel_w,
-                        head_h + len(lines) * line_h + line_h + 3 * PANEL_PAD_PX)
+                        head_h + len(lines) * line_h + menu_h + 3 * PANEL_PAD_PX)
     panel.center = (width // 2, height // 2)
     draw_panel(target, panel)
     draw_heading(target, assets, heading, (panel.centerx, panel.top + PANEL_PAD_PX))
@@ -461,13 +489,19 @@ def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign,
         draw_text(target, font, value, (panel.right - 2 * PANEL_PAD_PX, y), TEXT_COLOR,
                   anchor="topright")
         y += line_h
+    if choices:
+        draw_menu(target, font, choices, selected, (panel.left + PANEL_PAD_PX, y + PANEL_PAD_PX),
+                  panel.w - 2 * PANEL_PAD_PX)
+        return
     draw_text(target, font, "Press Enter or A", (panel.centerx, panel.bottom - PANEL_PAD_PX),
               GOLD, anchor="midbottom")
 
 
-def draw_game_over(target: pygame.Surface, assets: Assets, campaign: Campaign) -> None:
-    """Dim the last frame and show the final score, coins and deaths."""
-    _draw_result(target, assets, campaign, "Game Over")
+def draw_game_over(target: pygame.Surface, assets: Assets, campaign: Campaign,
+                   selected: int = 0) -> None:
+    """Dim the last frame and show the final score, coins and deaths, and the choice to
+    retry the level lost or go back to the title (``GAME_OVER_ITEMS[selected]`` lit)."""
+    _draw_result(target, assets, campaign, "Game Over", GAME_OVER_ITEMS, selected)
 
 
 WIN_HEADINGS = ("Level", "Time", "Coins", "Stomps")
@@ -516,6 +550,46 @@ def draw_win(target: pygame.Surface, assets: Assets, campaign: Campaign) -> None
     draw_text(target, font, footer, (box.centerx, y), TEXT_COLOR, anchor="midtop")
     draw_text(target, font, "Press Enter or A", (box.centerx, box.bottom - PANEL_PAD_PX),
               GOLD, anchor="midbottom")
+
+
+def credits_lines(font: pygame.font.Font, width: int) -> list[tuple[str, Color, int]]:
+    """The credits roll as lines of (text, colour, gap before it), each at most ``width``."""
+    lines: list[tuple[str, Color, int]] = []
+    for role, who in CREDITS:
+        lines.append((role, GOLD, CREDITS_ROLE_GAP_PX if lines else 0))
+        lines.extend((line, TEXT_COLOR, 0) for line in wrap_text(font, who, width))
+    lines.append((CREDITS_LAST, HIGHLIGHT_TEXT, 2 * CREDITS_ROLE_GAP_PX))
+    return lines
+
+
+def draw_credits(target: pygame.Surface, assets: Assets, frame: int) -> None:
+    """The credits after the win: over the title's drifting sky and running hero, the lines
+    roll up from the bottom at :data:`CREDITS_SCROLL_PX_S` and stop when the thanks reach
+    :data:`CREDITS_STOP_ROW_PX`. ``frame`` counts from when the credits came up, at
+    :data:`game.sim.sprite.ANIMATION_HZ` per second."""
+    _draw_sky(target, assets, frame)
+    dim(target)
+    width, height = target.get_size()
+    font = assets.font
+    line_h = font.get_linesize() + LINE_GAP_PX
+    lines = credits_lines(font, width - 4 * PANEL_PAD_PX)
+    roll_h = sum(line_h + gap for _, _, gap in lines) - line_h  # to the last line's top
+    risen = math.floor(frame * CREDITS_SCROLL_PX_S / ANIMATION_HZ)
+    bottom = height - CREDITS_BOTTOM_GAP_PX
+    y = max(bottom - risen, CREDITS_STOP_ROW_PX - roll_h)
+    clip = target.get_clip()
+    target.set_clip(pygame.Rect(0, CREDITS_TOP_PX, width, bottom - CREDITS_TOP_PX))
+    for text, color, gap in lines:
+        y += gap
+        if CREDITS_TOP_PX - line_h < y < bottom:
+            draw_text(target, font, text, (width // 2, y), color, anchor="midtop")
+        y += line_h
+    if y - line_h <= CREDITS_STOP_ROW_PX:  # the roll has stopped: say how to leave
+        draw_text(target, font, "Press Enter or A", (width // 2, y + line_h), GOLD,
+                  anchor="midtop")
+    target.set_clip(clip)
+    draw_heading(target, assets, "Credits", (width // 2, HEADING_RULE_GAP_PX))
+    _draw_runners(target, assets, frame)
 
 
 def wrap_text(font: pygame.font.Font, text: str, max_w: int) -> list[str]:

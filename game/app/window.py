@@ -7,13 +7,15 @@ feeds and obeys); how pads become actions and menu moves is in :mod:`game.app.ga
 
 The loop is :class:`GameWindow`: what lasts between frames, and one short method per phase of
 a frame, called in order by :meth:`GameWindow.play`: events, reload on save (``--watch``),
-music, ticks, the level-end banner, draw.
+music (the title's track in the menus, the place's in play, a jingle when the run ends),
+ticks, the level-end banner, draw.
 
 Screens: the title (Play, Level select, Options, Quit), the level select, the options
 (:mod:`game.app.options`: applied at once and saved), playing, paused (Esc, P or Start;
-Resume, Restart level, Timer, Options, Quit to title), game over and won (Enter or A returns
-to the title). While a level is played, its ghost (:mod:`game.app.ghosts`) is stepped beside
-it, one tick for each of the player's, and a best run without an assist becomes the ghost.
+Resume, Restart level, Timer, Options, Quit to title), game over (Retry this level, Quit to
+title) and won (Enter or A rolls the credits, and Enter or A again returns to the title).
+While a level is played, its ghost (:mod:`game.app.ghosts`) is stepped beside it, one tick
+for each of the player's, and a best run without an assist becomes the ghost.
 Arrows, W/S, the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B
 go back. A scripted run (``--inputs``) or one given ``--level`` skips the title; a scripted
 run ends at the end of the run, like a headless one (without ``--ticks``, when the script's
@@ -34,7 +36,7 @@ import pygame
 from pygame._sdl2.video import WINDOWPOS_CENTERED, Window
 
 from game.app.assets import Assets, load_assets
-from game.app.audio import Audio
+from game.app.audio import TITLE_TRACK, Audio
 from game.app.banner import Banner
 from game.app.debug_overlay import PANEL_KEY, PanelMode
 from game.app.effects import Effects
@@ -51,6 +53,7 @@ from game.app.menus import (
     QuitGame,
     RebindKey,
     RestartLevel,
+    RetryLevel,
     Screen,
     StartLevel,
     ToggleTimer,
@@ -63,11 +66,13 @@ from game.app.menus import (
 )
 from game.app.options import change
 from game.app.options_screen import draw_options
+from game.app.places import place_of
 from game.app.render import WorldRenderer
 from game.app.run import EXIT_OK, TARGET_FPS, Run, held_keys
 from game.app.saves import Attempt, CampaignMaps, Finish, Progress, progress_file
 from game.app.screens import (
     RELOAD_FAILED,
+    draw_credits,
     draw_error_banner,
     draw_game_over,
     draw_level_select,
@@ -86,7 +91,7 @@ from game.sim.inputs import Actions
 from game.sim.sprite import ANIMATION_HZ
 from game.sim.world import World
 
-MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT, Screen.OPTIONS)  # instead of the world
+MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT, Screen.OPTIONS, Screen.CREDITS)  # not the world
 STILL_SCREENS = (Screen.PAUSED, Screen.ENDED)  # nothing on them moves by itself
 MENU_FPS = 30  # the title and the level select animate at this rate: smooth, half the work
 STILL_FPS = 10  # a still screen only waits for input, so it looks for it this often
@@ -183,6 +188,7 @@ class GameWindow:
         self.replay_world: World | None = None  # the world the ghost was set up for
         self.dirty = True  # a still screen is drawn again after any event (see draw)
         self.last_shown: tuple[Menus, str | None, str | None, bool, PanelMode] | None = None
+        self.credits_from = 0  # self.frame when the credits came up: they roll from there
 
     def play(self) -> int:
         """Run frames until the window closes or a scripted run ends; the exit status."""
@@ -313,6 +319,8 @@ class GameWindow:
             self.menus, self.notice = before, problem  # stay on the menu and say why
         if self.menus.screen is Screen.PLAYING and before.screen is not Screen.PLAYING:
             self.held_over.begin(self.held())
+        if self.menus.screen is Screen.CREDITS and before.screen is not Screen.CREDITS:
+            self.credits_from = self.frame
         return False
 
     def reload_on_save(self) -> None:
@@ -331,12 +339,18 @@ class GameWindow:
                 self.reload_error = str(error)
 
     def music(self) -> None:
-        """Music plays while playing, holds its place while paused, stops elsewhere."""
-        if self.menus.screen is Screen.PLAYING:
-            self.audio.start_music()
-        elif self.menus.screen is Screen.PAUSED or (self.menus.screen is Screen.OPTIONS and
-                                                   self.menus.options_from is Screen.PAUSED):
+        """The place's music plays while playing and holds its place while paused (and on the
+        options screen opened from the pause menu); the title's plays in the menus and the
+        credits; none under the level-end banner or an ending (whose jingle plays as it comes
+        up, :meth:`end_run`)."""
+        screen = self.menus.screen
+        if screen is Screen.PLAYING:
+            self.audio.start_music(place_of(self.run.campaign.world.level.properties).name)
+        elif screen is Screen.PAUSED or (screen is Screen.OPTIONS and
+                                         self.menus.options_from is Screen.PAUSED):
             self.audio.pause_music()
+        elif screen in MENU_SCREENS:
+            self.audio.start_music(TITLE_TRACK)
         else:
             self.audio.stop_music()
 
@@ -369,8 +383,15 @@ class GameWindow:
         if self.banner is not None:
             self.menus = cleared(self.menus)
         elif run.finished():
-            self.menus = ended(self.menus)
+            self.end_run()
         return None
+
+    def end_run(self) -> None:
+        """The run is over: its ending comes up (the win, or game over), with its jingle."""
+        won = self.run.campaign.outcome is Outcome.WON
+        self.menus = ended(self.menus, won=won)
+        self.audio.stop_music()
+        self.audio.play("win" if won else "game-over")
 
     def tick(self) -> bool:
         """One tick with what is held; False when no more ticks should run this frame (the
@@ -433,7 +454,7 @@ class GameWindow:
             if self.menus.screen is Screen.CLEARED:
                 self.menus = replace(self.menus, screen=Screen.PLAYING)
             if self.run.finished():
-                self.menus = ended(self.menus)
+                self.end_run()
             elif self.menus.screen is Screen.PLAYING:
                 self.held_over.begin(self.held())
 
@@ -461,7 +482,8 @@ class GameWindow:
         if self.menus.screen is Screen.OPTIONS:
             draw_options(target, self.assets, self.frame, self.settings,
                          self.menus.options_item, self.rebinding)
-        _draw_screen(target, self.assets, self.menus, self.entries, campaign, self.frame,
+        frame = self.frame - (self.credits_from if self.menus.screen is Screen.CREDITS else 0)
+        _draw_screen(target, self.assets, self.menus, self.entries, campaign, frame,
                      self.using_pad, self.settings.hud_timer)
         if self.reload_error is not None:
             draw_error_banner(target, self.assets, RELOAD_FAILED + self.reload_error)
@@ -493,6 +515,8 @@ def _obey(command: Command, run: Run) -> str | None:
             run.campaign = Campaign(command.level, run.campaign.tuning, loader=run.campaign.loader)
         elif isinstance(command, RestartLevel):
             run.campaign.restart_level()
+        elif isinstance(command, RetryLevel):
+            run.campaign.retry_level()
     except LevelError as error:
         return str(error)
     return None
@@ -512,5 +536,7 @@ def _draw_screen(target: pygame.Surface, assets: Assets, menus: Menus,
         if campaign.outcome is Outcome.WON:
             draw_win(target, assets, campaign)
         else:
-            draw_game_over(target, assets, campaign)
+            draw_game_over(target, assets, campaign, menus.game_over_item)
+    elif menus.screen is Screen.CREDITS:
+        draw_credits(target, assets, frame)
 

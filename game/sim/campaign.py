@@ -182,6 +182,14 @@ class Campaign:
         self.world = self._world(self.world.level)
         self._begin_level()
 
+    def retry_level(self) -> None:
+        """After game over: the level lost starts again from its spawn, as
+        :meth:`restart_level` does, with the lives a run starts with. The deaths and the
+        levels finished before it stay counted."""
+        self.restart_level()
+        self.lives = self.tuning.start_lives
+        self.outcome = Outcome.RUNNING
+
     def _take_back_level(self) -> None:
         """Take the current level's coins, stomps and points out of the run's totals (its
         coins and enemies are about to be back in play, to be counted again)."""

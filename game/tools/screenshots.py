@@ -11,7 +11,10 @@ first level's winning script in this process and draw the frame with the window'
 code, :func:`game.app.frame.render_frame` (with the overlay's full panel, as after one press
 of F5) and :meth:`game.app.banner.Banner.draw`. ``menus.png`` draws the options screen and the
 level select side by side with the window's own drawing code, for a player who has finished
-the first two levels (each played through its winning script).
+the first two levels (each played through its winning script). ``endings.png`` is drawn the
+same way: a
+checkpoint's lantern just lit (with the window's effects), game over over the last frame of
+a run that lost every life, and the credits.
 """
 
 from __future__ import annotations
@@ -28,22 +31,27 @@ import pygame
 from game.app.assets import load_assets
 from game.app.banner import BANNER_S, Banner
 from game.app.debug_overlay import PanelMode
+from game.app.effects import Effects
 from game.app.files import save_image
 from game.app.frame import render_frame
 from game.app.hud import draw_text
-from game.app.menus import campaign_levels, level_entries
+from game.app.menus import GAME_OVER_ITEMS, RETRY, campaign_levels, level_entries
 from game.app.options import GAME_SPEED, OPTION_ITEMS
 from game.app.options_screen import draw_options
 from game.app.places import place_of
+from game.app.render import WorldRenderer
 from game.app.run import input_script
 from game.app.saves import Progress
-from game.app.screens import draw_level_select
+from game.app.screens import draw_credits, draw_game_over, draw_level_select
 from game.app.settings import Settings
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.levels.closed_output import quiet_when_output_closes
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
-from game.sim.campaign import Campaign
-from game.sim.world import Measure
+from game.sim.campaign import Campaign, Outcome
+from game.sim.inputs import Action
+from game.sim.sprite import ANIMATION_HZ
+from game.sim.tuning import TICK_S
+from game.sim.world import EventKind, Measure
 
 ROOT = Path(__file__).resolve().parents[2]
 SHOTS = ROOT / "assets" / "screenshots"
@@ -191,6 +199,55 @@ def menus_picture(path: Path) -> None:
     pygame.display.quit()
 
 
+ENDINGS_LEVEL = LEVELS_DIR / "05-spike-gauntlet.tmx"  # the level that brings in checkpoints
+LANTERN_FLARE_TICKS = 8  # how long after the lantern lights its frame is taken
+LOSING_LEVEL = LEVELS_DIR / "03-hop-along.tmx"  # holding right meets its frogs, three times
+LOSING_MAX_TICKS = 3600  # a minute of holding right: the picture is refused if no end by then
+CREDITS_SHOWN_S = 9  # how far into the roll the credits' frame is taken
+
+
+def endings_sheet(path: Path) -> None:
+    """Three frames side by side: a checkpoint's lantern just lit in Spike Gauntlet (its
+    winning script), game over with Retry this level lit (Hop Along, holding right until
+    the last life is lost) and the credits nine seconds into their roll."""
+    os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+    pygame.display.init()
+    pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX))
+    assets = load_assets()
+    renderer = WorldRenderer(assets)
+    renderer.effects = Effects()
+    script = input_script(ROOT / "tests" / "scripts" / f"{ENDINGS_LEVEL.stem}.txt")
+    campaign = Campaign(ENDINGS_LEVEL, loader=lambda p: load_level(p, images=True))
+    lit_at = None
+    while lit_at is None or campaign.ticks < lit_at + LANTERN_FLARE_TICKS:
+        world = campaign.world
+        events = campaign.tick(script.held_at(campaign.ticks))
+        renderer.effects.observe(world, events)
+        renderer.effects.advance(TICK_S)
+        if lit_at is None and any(e.kind is EventKind.CHECKPOINT for e in events):
+            lit_at = campaign.ticks
+    frames = [render_frame(campaign, debug=False, renderer=renderer).copy()]
+    losing = Campaign(LOSING_LEVEL, loader=lambda p: load_level(p, images=True))
+    while losing.outcome is Outcome.RUNNING and losing.ticks < LOSING_MAX_TICKS:
+        losing.tick(frozenset({Action.RIGHT}))
+    if losing.outcome is not Outcome.GAME_OVER:
+        raise RuntimeError(f"{LOSING_LEVEL.name}: holding right no longer loses every life "
+                           f"in {LOSING_MAX_TICKS} ticks: choose another LOSING_LEVEL")
+    frame = render_frame(losing, debug=False, assets=assets).copy()
+    draw_game_over(frame, assets, losing, GAME_OVER_ITEMS.index(RETRY))
+    frames.append(frame)
+    frame = pygame.Surface((VIEW_W_PX, VIEW_H_PX))
+    draw_credits(frame, assets, CREDITS_SHOWN_S * ANIMATION_HZ)
+    frames.append(frame)
+    sheet = pygame.Surface((len(frames) * (VIEW_W_PX + SHEET_GAP_PX) + SHEET_GAP_PX,
+                            VIEW_H_PX + 2 * SHEET_GAP_PX))
+    sheet.fill(SHEET_BACK)
+    for number, frame in enumerate(frames):
+        sheet.blit(frame, (SHEET_GAP_PX + number * (VIEW_W_PX + SHEET_GAP_PX), SHEET_GAP_PX))
+    save_image(sheet, path)
+    pygame.display.quit()
+
+
 def main() -> None:
     SHOTS.mkdir(parents=True, exist_ok=True)
     for shot in SHOTS_TO_TAKE:
@@ -206,6 +263,8 @@ def main() -> None:
     places_sheet(SHOTS / "places.png")
     print(f"menus.png: the options and the level select after {MENUS_LEVELS_DONE} levels")
     menus_picture(SHOTS / "menus.png")
+    print("endings.png: a lantern just lit, game over with Retry this level, the credits")
+    endings_sheet(SHOTS / "endings.png")
 
 
 if __name__ == "__main__":
