@@ -20,7 +20,10 @@ own :meth:`~game.sim.world.World.step`, then let walls only ever help the proof'
 * **Launches** (:func:`surfaces`). A body stands while any of its width overlaps the top of
   a Solid or OneWay shape, and may walk the whole of a run of tops at one height (walls are
   left out: they only stop it). So a run of tops from ``L`` to ``R`` is one launch, with
-  the body's left edge anywhere in ``(L - width, R)``.
+  the body's left edge anywhere in ``(L - width, R)``, summed sideways from its furthest
+  floats (:class:`Sweep`). A body whose feet stop exactly on a OneWay top while rising
+  stands there still rising, so a launch from a OneWay top is bounded by a second
+  envelope that leaves at a jump's speed.
 * **Landing** on a top needs the body's box to overlap it after the tick's sideways move,
   with the feet at or above it the tick before (or exactly on it after the move).
 * **Touching** an Exit (or counting a Checkpoint: touching it or jumping over it) needs the
@@ -29,10 +32,13 @@ own :meth:`~game.sim.world.World.step`, then let walls only ever help the proof'
 * **Starts**: the spawn, and each Checkpoint's respawn place once the flag can be counted.
   Lives and spikes only send the player back to a start, so they widen nothing.
 
-Every comparison gives the game :data:`SLACK_PX` more than it needs (the float sums of the
-game and of this proof may round apart by far less). Mechanics it does not bound make it
-prove nothing and say which (:attr:`Exact.unbounded`): moving Platforms (they push and
-carry) and enemies (a stomp bounces); the cell fill covers those.
+Heights get :data:`SLACK_PX` more than measured (the game's float sums at another height
+may round apart by far less); sideways moves are the game's own float sums, so the widest
+gap is exact even where a jump carries a whole number of pixels. Mechanics it does not
+bound make it prove nothing and say which (:attr:`Exact.unbounded`): moving Platforms
+(they push and carry) and enemies (a stomp bounces); the cell fill covers those. Its work
+is counted, never timed: past :data:`MAX_PAIRS` pairs of a launch and a place to land or
+touch, it proves nothing.
 
 >>> from game.sim.tuning import Tuning
 >>> envelope = air_envelope(Tuning())
@@ -62,7 +68,7 @@ from game.sim.world import EventKind, World
 SLACK_PX = 1e-6  # rounding room on every comparison (the game's float sums differ by ~1e-10)
 ENVELOPE_TILE_PX = 16  # the tiles of the test level the envelope is measured on
 MAX_ENVELOPE_TICKS = 60 * 60  # ticks measured per jump (a jump in any map's physics lands)
-MAX_SURFACES = 20_000  # runs of tops beyond which the proof is not tried (pairs: its square)
+MAX_PAIRS = 1_000_000  # launch and top (or Exit, or flag) pairs one proof may look at
 
 
 @dataclass(frozen=True)
@@ -112,13 +118,18 @@ class AirEnvelope:
 
 
 @lru_cache(maxsize=16)
-def air_envelope(tuning: Tuning) -> AirEnvelope | None:
+def air_envelope(tuning: Tuning, rising: bool = False) -> AirEnvelope | None:
     """The envelope for ``tuning``, played in the game's own tick (None when it cannot be
-    measured: a jump that does not come down within :data:`MAX_ENVELOPE_TICKS`)."""
+    measured: a jump that does not come down within :data:`MAX_ENVELOPE_TICKS`).
+
+    ``rising``: from a OneWay top the body may have come up through it, its feet stopping
+    exactly on the top: it then stands there (coyote time starts) while still rising. So
+    the body leaves such a top rising as fast as a jump sends it (no body rises faster),
+    which bounds every speed it may have had."""
     if tuning.gravity_px_s2 <= 0 or tuning.max_fall_speed_px_s <= 0:
         return None
     rise = jump_rise(tuning)
-    ticks = min(MAX_ENVELOPE_TICKS, len(rise) + tuning.coyote_ticks + 4)
+    ticks = min(MAX_ENVELOPE_TICKS, len(rise) * (2 if rising else 1) + tuning.coyote_ticks + 4)
     depth = ticks * tuning.max_fall_speed_px_s * tuning.tick_s + 4 * ENVELOPE_TILE_PX
     rows = 2 + math.ceil(depth / ENVELOPE_TILE_PX)
     tile = ENVELOPE_TILE_PX
@@ -135,6 +146,8 @@ def air_envelope(tuning: Tuning) -> AirEnvelope | None:
         world = World(level, tuning)
         if not world.player.on_ground:
             return None
+        if rising:
+            world.player.vy = -tuning.jump_speed_px_s
         heights = [0.0]
         for tick in range(1, ticks + 1):
             held = {Action.RIGHT} if tick == 1 else set()
@@ -221,6 +234,7 @@ class Surface:
     left: float
     right: float
     top: float
+    one_way: bool = False  # some of it is a OneWay top (a body may stand there rising)
 
 
 def _covered(grid: TileGrid, shape: TileShape, above: bool) -> bool:
@@ -241,21 +255,22 @@ def _covered(grid: TileGrid, shape: TileShape, above: bool) -> bool:
 def surfaces(grid: TileGrid, width: float) -> list[Surface]:
     """The runs of Solid and OneWay tops a body can stand on (a top under a Solid is a
     wall's inside: no body is ever there), tops the body's width joins merged."""
-    tops: dict[float, list[tuple[float, float]]] = {}
+    tops: dict[float, list[tuple[float, float, bool]]] = {}
     for shape in grid.shapes():
         if shape.kind is not TileKind.HAZARD and not _covered(grid, shape, True):
-            tops.setdefault(shape.box.top, []).append((shape.box.left, shape.box.right))
+            tops.setdefault(shape.box.top, []).append(
+                (shape.box.left, shape.box.right, shape.kind is TileKind.ONE_WAY))
     found: list[Surface] = []
     for top, spans in tops.items():
         spans.sort()
-        left, right = spans[0]
-        for s_left, s_right in spans[1:]:
+        left, right, one_way = spans[0]
+        for s_left, s_right, s_one_way in spans[1:]:
             if s_left - width <= right:  # a body can stand across the join
-                right = max(right, s_right)
+                right, one_way = max(right, s_right), one_way or s_one_way
             else:
-                found.append(Surface(left, right, top))
-                left, right = s_left, s_right
-        found.append(Surface(left, right, top))
+                found.append(Surface(left, right, top, one_way))
+                left, right, one_way = s_left, s_right, s_one_way
+        found.append(Surface(left, right, top, one_way))
     return found
 
 
@@ -290,6 +305,7 @@ class _Launch:
     high: float
     top: float
     standing: bool = False
+    rising: bool = False  # a OneWay top: the body may leave it rising (a jump's speed)
 
 
 def exact_reach(world: World) -> Exact:
@@ -301,17 +317,15 @@ def exact_reach(world: World) -> Exact:
         unbounded.append("a moving Platform (it pushes and carries)")
     if level.enemies:
         unbounded.append("an enemy (a stomp bounces the player)")
-    envelope = air_envelope(tuning)
-    if envelope is None:
+    envelope, rising = air_envelope(tuning), air_envelope(tuning, rising=True)
+    if envelope is None or rising is None:
         unbounded.append("a jump that does not come down within "
                          f"{MAX_ENVELOPE_TICKS // 60} s")
-    if unbounded or envelope is None:
+    if unbounded or envelope is None or rising is None:
         return Exact(False, unbounded=unbounded)
     grid = level.grid
     w, h = world.spawn.w, world.spawn.h  # the player's box (a Player object sets its size)
     tops = surfaces(grid, w)
-    if len(tops) > MAX_SURFACES:
-        return Exact(False, unbounded=[f"more than {MAX_SURFACES:,} runs of floor"])
     ceilings = _ceilings(grid)
     exits = list(level.exits)
     flags = [(Box(f.x - 1, f.top - f.h, f.w + 2, 2 * f.h), start) for f, start
@@ -321,14 +335,20 @@ def exact_reach(world: World) -> Exact:
     reached: list[Surface] = []
     result = Exact(False, reached, gap_px=envelope.widest_gap_px(),
                    ledge_px=envelope.highest_ledge_px())
+    pairs = 0
     while queue:
         launch = queue.pop()
-        near = _near_ceiling(ceilings, launch.top - h, envelope)
+        pairs += len(left) + len(exits) + len(flags)
+        if pairs > MAX_PAIRS:
+            return Exact(False, unbounded=[f"a map with more than {MAX_PAIRS:,} pairs of a "
+                                           "place to jump from and a floor to land on"])
+        air = rising if launch.rising else envelope
+        near = _near_ceiling(ceilings, launch.top - h, air)
+        sweep = Sweep(air, w, launch.low, launch.high, launch.standing, near)
 
-        sweep = Sweep(envelope, w, launch.low, launch.high, launch.standing, near)
-
-        def touches(region: Box, launch: _Launch = launch, sweep: Sweep = sweep) -> bool:
-            ticks = envelope.last_tick_at(launch.top - h - region.bottom)
+        def touches(region: Box, launch: _Launch = launch, sweep: Sweep = sweep,
+                    air: AirEnvelope = air) -> bool:
+            ticks = air.last_tick_at(launch.top - h - region.bottom)
             return ticks >= 0 and sweep.overlaps(ticks, region.left, region.right)
 
         if any(touches(goal) for goal in exits):
@@ -339,11 +359,12 @@ def exact_reach(world: World) -> Exact:
                 flags.remove((region, start))
                 queue.append(_Launch(start.x, start.x, start.bottom))
         for surface in list(left):
-            ticks = envelope.last_tick_at(launch.top - surface.top)
+            ticks = air.last_tick_at(launch.top - surface.top)
             if ticks >= 0 and sweep.overlaps(ticks, surface.left, surface.right):
                 left.remove(surface)
                 reached.append(surface)
-                queue.append(_Launch(surface.left, surface.right, surface.top, True))
+                queue.append(_Launch(surface.left, surface.right, surface.top, True,
+                                     surface.one_way))
     return result
 
 
