@@ -160,3 +160,17 @@ def test_a_wall_out_of_reach_on_a_decoration_layer_is_named_at_its_tile(
            "way" in finding.text
     assert finding.layer == "background (no collision)"
     assert finding.tile is not None and finding.tile[0] == 8 and 2 <= finding.tile[1] <= 4
+
+
+def test_a_ceiling_near_the_take_off_does_not_move_the_edge() -> None:
+    """A corner correction leaves the body flush with a ceiling's corner, from where it
+    runs on: a roof over the near side, or a block over the spawn, carries no jump further
+    than a run off the edge does."""
+    for roof in (Box(96, FLOOR - 40, 80, 16), Box(16, FLOOR - 40, 32, 16)):
+        for width, impossible in ((DEFAULT_LIMITS.coyote_gap_px, False),
+                                  (DEFAULT_LIMITS.coyote_gap_px + 1, True)):
+            level = level_from_boxes(
+                COLS, ROWS, [Box(0, FLOOR, EDGE, 64), roof,
+                             Box(EDGE + width, FLOOR, WIDTH - EDGE - width, 64)],
+                SPAWN, [exit_on(FLOOR)])
+            assert proven_impossible(level) is impossible

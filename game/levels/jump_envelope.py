@@ -16,7 +16,7 @@ own :meth:`~game.sim.world.World.step`, then let walls only ever help the proof'
   with no jump at all. After ``k`` ticks in the air the feet are no higher than the
   highest of those (letting go of jump, or a head bump, only lowers them), and the body
   has moved at most ``k`` ticks of full run speed to either side (no input moves it
-  faster), plus a corner correction's slide on each rising tick where a ceiling is near.
+  faster), or, where a ceiling is near, from a corner of it (below).
 * **Launches** (:func:`surfaces`). A body stands while any of its width overlaps the top of
   a Solid or OneWay shape, and may walk the whole of a run of tops at one height (walls are
   left out: they only stop it). So a run of tops from ``L`` to ``R`` is one launch, with
@@ -26,6 +26,9 @@ own :meth:`~game.sim.world.World.step`, then let walls only ever help the proof'
   envelope that leaves at a jump's speed.
 * **Landing** on a top needs the body's box to overlap it after the tick's sideways move,
   with the feet at or above it the tick before (or exactly on it after the move).
+* **Corner corrections.** A rising head that clips a ceiling's corner slides past it and
+  is left flush with that corner, so a jump that slid is, after its last slide, at a
+  corner of a ceiling it could meet, and runs on from there (:func:`_corners`).
 * **Touching** an Exit (or counting a Checkpoint: touching it or jumping over it) needs the
   box anywhere in the envelope to overlap it; falls are followed until the body is below
   the map, where it loses a life and comes back to a start.
@@ -79,6 +82,7 @@ class AirEnvelope:
     heights: tuple[float, ...]  # the highest the feet can be above take-off after k ticks
     fall_px: float  # the least the feet drop each tick after the last measured one
     rising_ticks: int  # the most ticks a jump rises (a corner slide needs a rise)
+    last_rise: int  # the last tick on which any jump still rises
     rise_start_px: float  # the lowest the feet are below take-off when a rise starts
     corner_px: float  # the farthest one corner correction slides
     width_px: int  # the body's size
@@ -108,7 +112,7 @@ class AirEnvelope:
     def widest_gap_px(self, edge_px: float = 192.0) -> int:
         """The widest gap after a top ending at ``edge_px`` this envelope lets a body cross
         to a top at the same height: the bound the proof uses, in whole pixels."""
-        sweep = Sweep(self, self.width_px, edge_px, edge_px, standing=True, ceilings=False)
+        sweep = Sweep(self, self.width_px, edge_px, edge_px, standing=True, corners=None)
         _, high = sweep.at(self.last_tick_at(0.0))
         return math.ceil((high + self.width_px) - edge_px) - 1
 
@@ -165,6 +169,8 @@ def air_envelope(tuning: Tuning, rising: bool = False) -> AirEnvelope | None:
         return None  # still rising, or not yet below the take-off, when measuring stopped
     risings = [sum(1 for a, b in pairwise(path) if b > a)
                for path in paths]
+    last_rises = [max((i for i in range(1, len(path)) if path[i] > path[i - 1]), default=0)
+                  for path in paths]
     starts_at = [-path[i - 1] for path in paths for i in range(1, len(path))
                  if path[i] > path[i - 1]] or [0.0]
     heights = [max(path[k] for path in paths) + SLACK_PX for k in range(ticks + 1)]
@@ -175,7 +181,7 @@ def air_envelope(tuning: Tuning, rising: bool = False) -> AirEnvelope | None:
         after[k] = -highest
     return AirEnvelope(
         tuning.run_speed_px_s * tuning.tick_s, tuple(heights), -max(last) * (1 - 1e-9),
-        max(risings), max(starts_at) + SLACK_PX, tuning.corner_correction_px,
+        max(risings), max(last_rises), max(starts_at) + SLACK_PX, tuning.corner_correction_px,
         tuning.player_width_px, tuning.player_height_px, tuple(after))
 
 
@@ -189,11 +195,11 @@ class Sweep:
     near, is added on each rising tick, with :data:`SLACK_PX` to spare."""
 
     def __init__(self, envelope: AirEnvelope, width: float, low: float, high: float,
-                 standing: bool, ceilings: bool) -> None:
+                 standing: bool, corners: tuple[float, float] | None) -> None:
         """``low``/``high``: the launch's ends, as a surface's (``standing``: a body
         ``width`` wide stands while ``x + width > low`` and ``x < high``) or as a start's
         (the body is at ``low == high``)."""
-        self.envelope, self.width, self.ceilings = envelope, width, ceilings
+        self.envelope, self.width, self.corners = envelope, width, corners
         w = width
         if standing:
             high = math.nextafter(high, -math.inf)  # the last float left of the end
@@ -213,10 +219,10 @@ class Sweep:
             self.right.append(max(right, ((right + w) + step) - w))  # (or it stays put)
             self.left.append(min(left, left + -step))
         low, high = self.left[ticks], self.right[ticks]
-        if self.ceilings:
-            extra = envelope.corner_px * min(ticks, envelope.rising_ticks) + SLACK_PX * (
-                ticks + 1)
-            low, high = low - extra, high + extra
+        if self.corners is not None and ticks >= 1:  # the last slide's corner, then runs
+            run = (ticks - 1) * step + SLACK_PX * (ticks + 1)
+            low = min(low, self.corners[0] - run)
+            high = max(high, self.corners[1] + run)
         return low, high
 
     def overlaps(self, ticks: int, left: float, right: float) -> bool:
@@ -274,10 +280,25 @@ def surfaces(grid: TileGrid, width: float) -> list[Surface]:
     return found
 
 
-def _ceilings(grid: TileGrid) -> list[float]:
-    """The heights of Solid bottoms a rising head can meet, sorted."""
-    return sorted({s.box.bottom for s in grid.shapes()
-                   if s.kind is TileKind.SOLID and not _covered(grid, s, False)})
+def _ceilings(grid: TileGrid) -> list[Surface]:
+    """The runs of Solid bottoms a rising head can meet (a bottom wholly against a Solid
+    under it is met by no body), bottoms that touch merged, sorted by height."""
+    bottoms: dict[float, list[tuple[float, float]]] = {}
+    for shape in grid.shapes():
+        if shape.kind is TileKind.SOLID and not _covered(grid, shape, False):
+            bottoms.setdefault(shape.box.bottom, []).append((shape.box.left, shape.box.right))
+    found: list[Surface] = []
+    for bottom, spans in sorted(bottoms.items()):
+        spans.sort()
+        left, right = spans[0]
+        for s_left, s_right in spans[1:]:
+            if s_left <= right:
+                right = max(right, s_right)
+            else:
+                found.append(Surface(left, right, bottom))
+                left, right = s_left, s_right
+        found.append(Surface(left, right, bottom))
+    return found
 
 
 @dataclass
@@ -327,6 +348,7 @@ def exact_reach(world: World) -> Exact:
     w, h = world.spawn.w, world.spawn.h  # the player's box (a Player object sets its size)
     tops = surfaces(grid, w)
     ceilings = _ceilings(grid)
+    ceiling_heights = [run.top for run in ceilings]
     exits = list(level.exits)
     flags = [(Box(f.x - 1, f.top - f.h, f.w + 2, 2 * f.h), start) for f, start
              in zip(level.checkpoints, starts_of(world)[1:], strict=False)]
@@ -343,8 +365,8 @@ def exact_reach(world: World) -> Exact:
             return Exact(False, unbounded=[f"a map with more than {MAX_PAIRS:,} pairs of a "
                                            "place to jump from and a floor to land on"])
         air = rising if launch.rising else envelope
-        near = _near_ceiling(ceilings, launch.top - h, air)
-        sweep = Sweep(air, w, launch.low, launch.high, launch.standing, near)
+        corners = _corners(ceilings, ceiling_heights, launch, w, h, air)
+        sweep = Sweep(air, w, launch.low, launch.high, launch.standing, corners)
 
         def touches(region: Box, launch: _Launch = launch, sweep: Sweep = sweep,
                     air: AirEnvelope = air) -> bool:
@@ -373,10 +395,24 @@ def starts_of(world: World) -> list[Box]:
     return [start.box for start in starts(world)]
 
 
-def _near_ceiling(ceilings: list[float], head: float, envelope: AirEnvelope) -> bool:
-    """Is a Solid bottom within the heights a rising head from ``head`` can meet?"""
-    low = bisect.bisect_left(ceilings, head - max(envelope.heights) - SLACK_PX)
-    return low < len(ceilings) and ceilings[low] <= head + envelope.rise_start_px
+def _corners(ceilings: list[Surface], heights: list[float], launch: _Launch, width: float,
+             height: float, envelope: AirEnvelope) -> tuple[float, float] | None:
+    """Where a corner correction may put the body's left edge on a jump from ``launch``:
+    the least and the most, or None when no ceiling is near. A slide leaves the body
+    flush with a corner of a run of Solid bottoms its rising head meets, so after the last
+    slide it is at a corner and moves on from there. The runs are those at the heights a
+    head rising from the launch passes, within the sideways reach of a rise (``heights``:
+    the runs' bottoms, for :mod:`bisect`)."""
+    head = launch.top - height
+    first = bisect.bisect_left(heights, head - max(envelope.heights) - SLACK_PX)
+    last = bisect.bisect_right(heights, head + envelope.rise_start_px)
+    reach = (envelope.step_px * envelope.last_rise + envelope.corner_px
+             * envelope.rising_ticks + 1.0)
+    near = [run for run in ceilings[first:last]
+            if run.left < launch.high + width + reach and launch.low - width - reach < run.right]
+    if not near:
+        return None
+    return min(run.left for run in near) - width, max(run.right for run in near)
 
 
 def nearest_reached(exact: Exact, level: Level) -> Cell | None:
