@@ -28,7 +28,7 @@ from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, SPAWN, WIDTH, exit_on, 
 # faster, whose widest jump carries exactly a whole number of pixels (one pixel wider is
 # missed by a float's last bit, and proven so).
 OWN_PHYSICS = {
-    "floaty": {"gravity": 600.0},
+    "floaty": {"gravity": 650.0},
     "slow": {"run_speed": 70.0, "jump_speed": 250.0},
     "fast": {"run_speed": 120.0, "jump_speed": 320.0},
 }
