@@ -137,11 +137,13 @@ def air_envelope(tuning: Tuning, rising: bool = False) -> AirEnvelope | None:
     depth = ticks * tuning.max_fall_speed_px_s * tuning.tick_s + 4 * ENVELOPE_TILE_PX
     rows = 2 + math.ceil(depth / ENVELOPE_TILE_PX)
     tile = ENVELOPE_TILE_PX
-    grid = TileGrid(8, rows, tile, tile)
-    grid.put(0, 1, TileShape(Box(0, tile, tile, tile), TileKind.SOLID, 0, 1))
     first = min(run_change_px_s(tuning, True, True), tuning.run_speed_px_s) * tuning.tick_s
     if not first > 0:
         return None
+    # the first tick's step, then the air slows it to a stop: room for the drift
+    drift = first * (tuning.air_stop_time_s / tuning.tick_s + 2)
+    grid = TileGrid(4 + math.ceil(drift / tile), rows, tile, tile)
+    grid.put(0, 1, TileShape(Box(0, tile, tile, tile), TileKind.SOLID, 0, 1))
     spawn = Box(tile - min(1.0, first / 2), tile - tuning.player_height_px,
                 tuning.player_width_px, tuning.player_height_px)
     level = Level(Path("envelope"), grid, spawn)
@@ -340,8 +342,8 @@ def exact_reach(world: World) -> Exact:
         unbounded.append("an enemy (a stomp bounces the player)")
     envelope, rising = air_envelope(tuning), air_envelope(tuning, rising=True)
     if envelope is None or rising is None:
-        unbounded.append("a jump that does not come down within "
-                         f"{MAX_ENVELOPE_TICKS // 60} s")
+        unbounded.append("this map's physics (a jump could not be measured within "
+                         f"{MAX_ENVELOPE_TICKS:,} ticks)")
     if unbounded or envelope is None or rising is None:
         return Exact(False, unbounded=unbounded)
     grid = level.grid
