@@ -139,7 +139,7 @@ def _add_verdict(report: MapReport, verdict: Verdict) -> None:
     report.verdict = verdict.kind
     if verdict.kind is Kind.SOLVED:
         return
-    where = tile_place(*verdict.tile) if verdict.tile is not None else ""
+    where = tile_place(*verdict.tile, verdict.layer) if verdict.tile is not None else ""
     # Impossible is an error; not decided is neither proven bad nor good: a warning line,
     # counted apart in the summary and given its own exit status.
     report.add("error" if verdict.kind is Kind.IMPOSSIBLE else "warning", where,
