@@ -39,6 +39,7 @@ from game.app.options import (
 )
 from game.app.options_screen import draw_options
 from game.app.run import Run
+from game.app.screens import CONTROLS, controls_rows, draw_title
 from game.app.settings import Settings, settings_file
 from game.app.window import GameWindow
 from game.sim.campaign import Campaign
@@ -191,3 +192,15 @@ def test_the_options_screen_draws_every_row_with_its_value(assets: Assets) -> No
     rows = draw_options(target, assets, 0, Settings(game_speed=70), 0)
     assert [name for name, _ in rows] == list(OPTION_ITEMS)
     assert dict(rows)[GAME_SPEED] == "70 %" and dict(rows)["Key: jump"] == "space, z, up, w"
+
+
+def test_the_title_shows_the_keys_the_player_has_bound(assets: Assets) -> None:
+    surface = pygame.Surface((320, 180))
+    settings = Settings()
+    draw_title(surface, assets, 0, 0, (), keys=settings.keys)
+    before = pygame.image.tobytes(surface, "RGB")
+    assert controls_rows(settings.keys) == CONTROLS
+    settings.rebind("jump", "x")
+    assert controls_rows(settings.keys)[1][1] == "X"
+    draw_title(surface, assets, 0, 0, (), keys=settings.keys)
+    assert pygame.image.tobytes(surface, "RGB") != before

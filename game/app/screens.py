@@ -23,7 +23,7 @@ What it teaches:
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 import pygame
 
@@ -49,6 +49,7 @@ from game.app.menus import (
     LevelEntry,
     next_to_play,
 )
+from game.app.settings import DEFAULT_KEYS
 from game.sim.campaign import Campaign, totals
 from game.sim.sprite import ANIMATION_HZ, animation_index
 from game.sim.tuning import TICK_S
@@ -132,6 +133,29 @@ CONTROLS = (  # action, keyboard, pad (an Xbox-style pad with the default button
     ("Fullscreen", "F11", "F11"),
 )
 CONTROLS_HEADINGS = ("", "Keyboard", "Gamepad")
+KEY_NAMES_SHOWN = 2  # a bound action's keys the title lists; the options screen shows all
+
+
+def controls_rows(keys: Mapping[str, Sequence[str]] | None = None
+                  ) -> tuple[tuple[str, str, str], ...]:
+    """The title's controls table, with the keyboard column the player's own bindings
+    (``keys``: action name -> pygame key names, as the options screen saves them); None or
+    the default bindings give the table as written in :data:`CONTROLS`.
+
+    >>> controls_rows({"left": ["j"], "right": ["l"], "jump": ["k", "x", "c"]})[:2]
+    (('Move', 'J / L', 'Stick / D-pad'), ('Jump', 'K / X', 'A'))
+    """
+    if keys is None or all(list(keys.get(action, ())) == list(names)
+                           for action, names in DEFAULT_KEYS.items()):
+        return CONTROLS
+
+    def shown(action: str) -> str:
+        names = list(keys.get(action, ()))[:KEY_NAMES_SHOWN]
+        return " / ".join(name.title() for name in names) or "-"
+
+    move = (CONTROLS[0][0], f"{shown('left')} / {shown('right')}", CONTROLS[0][2])
+    jump = (CONTROLS[1][0], shown("jump"), CONTROLS[1][2])
+    return (move, jump, *CONTROLS[2:])
 
 
 def heading_h(assets: Assets) -> int:
@@ -208,13 +232,14 @@ def _draw_sky(target: pygame.Surface, assets: Assets, frame: int) -> None:
 
 
 def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int,
-               levels: Sequence[LevelEntry], *, pad: bool = False) -> None:
+               levels: Sequence[LevelEntry], *, pad: bool = False,
+               keys: Mapping[str, Sequence[str]] | None = None) -> None:
     """The title screen: drifting sky, the game's name, the menu, how to play, a running hero.
 
     ``frame`` counts at :data:`game.sim.sprite.ANIMATION_HZ` per second and drives the motion;
     ``TITLE_ITEMS[selected]`` is lit, and a line under the panels says what it leads to. The
     controls shown are the gamepad's if ``pad`` (the last thing pressed was on a pad), else
-    the keyboard's.
+    the keyboard's, as the player has bound them (``keys``, see :func:`controls_rows`).
     """
     _draw_sky(target, assets, frame)
     seconds = frame / ANIMATION_HZ
@@ -240,7 +265,8 @@ def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int
     menu_w, menu_h = menu_size(assets.font, TITLE_ITEMS)
     menu = pygame.Rect(0, top, menu_w + 2 * PANEL_PAD_PX, menu_h + 2 * PANEL_PAD_PX)
     column = 2 if pad else 1
-    controls = _controls_panel(assets, top)
+    rows = controls_rows(keys)
+    controls = _controls_panel(assets, top, rows)
     menu.left = (target.get_width() - menu.w - PANEL_GAP_PX - controls.w) // 2
     controls.left = menu.right + PANEL_GAP_PX
     draw_panel(target, menu)
@@ -252,7 +278,7 @@ def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int
         draw_text(target, font, fit_text(font, hint, pair.w),
                   (pair.centerx, pair.bottom + LINE_GAP_PX), DIM_TEXT, anchor="midtop",
                   antialias=SMALL_TEXT_ANTIALIAS)
-    _draw_controls(target, assets, controls, column)
+    _draw_controls(target, assets, controls, column, rows)
     _draw_runners(target, assets, frame)
 
 
@@ -269,11 +295,12 @@ def _title_hint(item: str, levels: Sequence[LevelEntry]) -> str:
     return f"{unlocked} of {len(levels)} levels unlocked"
 
 
-def _controls_panel(assets: Assets, top: int) -> pygame.Rect:
+def _controls_panel(assets: Assets, top: int,
+                    controls: Sequence[tuple[str, str, str]]) -> pygame.Rect:
     """Where the controls table goes: wide enough for either device's column, so the title
     does not shift when the player picks up a pad."""
     font = assets.small_font
-    rows = (CONTROLS_HEADINGS, *CONTROLS)
+    rows = (CONTROLS_HEADINGS, *controls)
     labels_w = max(font.size(row[0])[0] for row in rows)
     columns_w = labels_w + max(font.size(text)[0] for row in rows for text in row[1:])
     return pygame.Rect(0, top, columns_w + COLUMN_GAP_PX + 2 * PANEL_PAD_PX,
@@ -281,12 +308,12 @@ def _controls_panel(assets: Assets, top: int) -> pygame.Rect:
 
 
 def _draw_controls(target: pygame.Surface, assets: Assets, panel: pygame.Rect,
-                   column: int) -> None:
+                   column: int, controls: Sequence[tuple[str, str, str]]) -> None:
     """The controls as a table: what, and which keys (column 1) or pad buttons (column 2)."""
     font = assets.small_font
     translucent_rect(target, panel, PANEL_COLOR)
     y = panel.top + PANEL_PAD_PX
-    for number, row in enumerate((CONTROLS_HEADINGS, *CONTROLS)):
+    for number, row in enumerate((CONTROLS_HEADINGS, *controls)):
         draw_text(target, font, row[0], (panel.left + PANEL_PAD_PX, y), DIM_TEXT,
                   outline=None, antialias=SMALL_TEXT_ANTIALIAS)
         draw_text(target, font, row[column], (panel.right - PANEL_PAD_PX, y),

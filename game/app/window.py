@@ -484,7 +484,7 @@ class GameWindow:
                          self.menus.options_item, self.rebinding)
         frame = self.frame - (self.credits_from if self.menus.screen is Screen.CREDITS else 0)
         _draw_screen(target, self.assets, self.menus, self.entries, campaign, frame,
-                     self.using_pad, self.settings.hud_timer)
+                     self.using_pad, self.settings.hud_timer, self.settings.keys)
         if self.reload_error is not None:
             draw_error_banner(target, self.assets, RELOAD_FAILED + self.reload_error)
         elif self.notice is not None and self.menus.screen is not Screen.PLAYING:
@@ -524,10 +524,10 @@ def _obey(command: Command, run: Run) -> str | None:
 
 def _draw_screen(target: pygame.Surface, assets: Assets, menus: Menus,
                  entries: tuple[LevelEntry, ...], campaign: Campaign, frame: int,
-                 using_pad: bool, timer_on: bool) -> None:
+                 using_pad: bool, timer_on: bool, keys: dict[str, list[str]]) -> None:
     """The screen that is up: a menu in place of the world, or over it."""
     if menus.screen is Screen.TITLE:
-        draw_title(target, assets, frame, menus.title_item, entries, pad=using_pad)
+        draw_title(target, assets, frame, menus.title_item, entries, pad=using_pad, keys=keys)
     elif menus.screen is Screen.LEVEL_SELECT:
         draw_level_select(target, assets, frame, entries, menus.level_item)
     elif menus.screen is Screen.PAUSED:
