@@ -7,8 +7,8 @@ it; no PATH checks the shipped campaign. Never a traceback, whatever the input. 
 loads is then *judged* (:mod:`game.levels.verdict`): **solved** (a route reaches an Exit
 when replayed), **impossible** (no open path joins spawn and Exit, or the Exit lies outside
 the player's reach: an error), or **not decided** (the search spent its budget of work,
-``--budget N`` moves, or ``--seconds S`` if given, and nothing proved it impossible: a
-``warning: not decided`` line that says how far it got and how to search further).
+the map's own or ``--budget N`` moves, or ``--seconds S`` if given, and nothing proved it
+impossible: a ``warning: not decided`` line that says how far it got and how to search further).
 ``--proof SCRIPT`` replays a recorded win instead of searching; ``--no-solve`` judges
 nothing; ``--format json`` prints one JSON document instead of lines; ``--jobs N`` checks
 up to N maps at once (default: one per core), with the same lines in the same order. The

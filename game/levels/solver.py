@@ -26,6 +26,16 @@ What it teaches: a **beam search** over a deterministic simulation.
   from the platforms' routes alone, since they go their ways whatever the player does), so
   a beam waiting for a ferry pays for one child instead of seven every 6 ticks. A wait
   counts as the moves its ticks would take, so the budget still measures the work done.
+* **Two stages: plain moves, then timed inputs.** The moves above, held 6 ticks each, may
+  spend :data:`PLAIN_SHARE` of the budget (every shipped level is solved there). If they
+  find no route, the search starts again from the spawn and also tries inputs timed to the
+  tick (:meth:`_Search.timed_children`): on the ground near an edge, jump pressed on each
+  tick from :data:`EARLY_TICKS` before the run leaves the ground to the last coyote tick,
+  held for each number of ticks of the rise; in the air just before landing, jump pressed
+  so the jump buffer makes it leave on the first tick on the ground. This stage tells
+  apart places :data:`~game.levels.search_key.FINE_PLACE_PX` apart.
+* **The budget grows with the map** (:mod:`game.levels.search_budget`): moves for each
+  cell the reach proof's fill reached, unless ``--budget N`` gives one.
 * **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
   state, step the world, keep the child's state.
 * **Enemies go their own way** (:mod:`game.levels.enemy_timeline`): where an enemy is at a
