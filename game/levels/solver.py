@@ -137,6 +137,9 @@ PLAIN_SHARE = 0.5  # of a map's budget, what the plain moves may spend before ti
 EARLY_TICKS = 16  # an edge's jumps are pressed from this many ticks before the run leaves it
 EDGE_LOOK_PX = 48.0  # the edge's jumps are tried from the first state this close to an edge
 MAX_RUN_TICKS = 60  # the run to an edge is given up after this many ticks
+MAX_FALL_TICKS = 120  # a timed jump that has not landed after this many ticks is dropped
+FULL_HOLD_TICKS = 10 * MOVE_TICKS  # jump held this long: the whole rise, on any physics
+PHASES_PER_PX = 8  # an edge's jumps are tried again from a place 1/8 px further along a tick
 WAIT_TICKS = 30  # the wait macro: stand still this long, for a moving platform to come round
 UNTIL_A_PLATFORM_COMES = 0  # the other wait: stand still until a moving platform comes ...
 COMES_PX = 16.0  # ... this close to the player
@@ -286,7 +289,8 @@ class _Search:
                        else map_budget(len(self.steps)))
         self.limit = self.budget  # the moves this stage of the search may reach (run())
         self.timed = False  # the second stage: timed inputs are tried too
-        self.edges_tried: set[tuple[tuple[int, int], int]] = set()  # (edge cell, direction)
+        # (edge cell, direction, place within a tick's run) of each edge's jumps tried
+        self.edges_tried: set[tuple[tuple[int, int], int, int]] = set()
         self.weight = move_weight(level)  # moves of the budget each move counts for
         self.states = 0
         self.pit_penalty = 0.0  # the beams set it: see beams()
@@ -369,9 +373,13 @@ class _Search:
     def stage(self) -> Node | None:
         """Best first (on a level without moving platforms), then beams that widen where
         they are stuck, until a route is found or this stage's share is spent."""
-        if not self.world.platforms:  # waiting never looks better to a best-first search
+        # Waiting never looks better to a best-first search: on a level with moving
+        # platforms, only the second stage searches best first, for half its share (a beam
+        # drops a timed jump while it is over a pit, as it drops every fall)
+        if not self.world.platforms or self.timed:
+            share = self.limit - self.moves_tried
             found = self.best_first(self.moves_tried + min(
-                self.effort.greedy_moves, self.limit - self.moves_tried))
+                self.effort.greedy_moves, share // 2 if self.world.platforms else share))
             if found is not None or self.out_of_time():
                 return found
         return self.beams()
@@ -483,18 +491,27 @@ class _Search:
     def edge_jumps(self, snapshot: Snapshot, node: Node | None, ticks: int,
                    seen: dict[StateKey, int], layer: int,
                    ) -> Iterator[tuple[float, Snapshot, Node]]:
-        """Once for each edge and direction: run to the edge from here, and press jump on
-        each tick from :data:`EARLY_TICKS` before the run leaves the ground to the last
-        tick of coyote time, holding it for each number of ticks until the rise ends (a
-        longer hold is the same jump), then steering on for one move."""
+        """Once for each edge, direction and place within a tick's run (where the last step
+        before the edge falls changes how far a jump carries, to 1/:data:`PHASES_PER_PX`
+        px): run to the edge from here, and press jump on each tick from
+        :data:`EARLY_TICKS` before the run leaves the ground to the last tick of coyote time,
+        latest first; hold it for the whole rise, or, with something overhead
+        (:meth:`overhead`), for each number of ticks until the rise ends (a longer hold is
+        the same jump); then hold the run until the player lands (:meth:`run_until_landing`).
+        """
         world, player = self.world, self.world.player
         lives = node.lives_lost if node is not None else 0
+        step = world.tuning.run_speed_px_s * world.tuning.tick_s  # px a tick at a run
         for run in RUNS:
             snapshot.restore(world)
-            edge = self.edge_ahead(1 if R in run else -1)
-            if edge is None or (edge, 1 if R in run else -1) in self.edges_tried:
+            direction = 1 if R in run else -1
+            edge = self.edge_ahead(direction)
+            # where the run's last step before the edge falls changes how far a jump carries:
+            # each edge is tried from each place within a tick's run, to 1/PHASES_PER_PX px
+            phase = math.floor(player.box.x % step * PHASES_PER_PX)
+            if edge is None or (edge, direction, phase) in self.edges_tried:
                 continue
-            self.edges_tried.add((edge, 1 if R in run else -1))
+            self.edges_tried.add((edge, direction, phase))
             states = [snapshot]
             left_at: int | None = None
             for tick in range(1, MAX_RUN_TICKS + 1):
@@ -510,9 +527,12 @@ class _Search:
             self.moves_tried += math.ceil(len(states) / MOVE_TICKS) * self.weight
             if left_at is None:
                 continue
-            for press in range(max(0, left_at - EARLY_TICKS), len(states)):
+            holds = (range(1, FULL_HOLD_TICKS) if self.overhead(snapshot, states[left_at])
+                     else range(FULL_HOLD_TICKS, FULL_HOLD_TICKS + 1))
+            # the latest presses first: the widest jumps are the late ones
+            for press in range(len(states) - 1, max(0, left_at - EARLY_TICKS) - 1, -1):
                 ran = Node(node, run, ticks + press, lives) if press else node
-                for hold in range(1, 10 * MOVE_TICKS):
+                for hold in holds:
                     if self.out_of_time():
                         return
                     states[press].restore(world)
@@ -527,16 +547,55 @@ class _Search:
                         break
                     rising = player.rising_from_jump
                     jumped = Node(ran, run | {J}, ticks + press + hold, lives)
-                    after = Snapshot.of(world)
-                    outcome = self.try_move(after, jumped.ticks, run)
-                    found = self.child(after, jumped, run, jumped.ticks, MOVE_TICKS, outcome,
-                                       seen, layer)
+                    landed = self.run_until_landing(jumped.ticks, run)
+                    if landed is None:  # fell to a life lost, or still falling
+                        if not rising:
+                            break
+                        continue
+                    found = self.child(states[press], jumped, run, jumped.ticks, landed[0],
+                                       landed[1], seen, layer)
                     if found is not None:
                         yield found
                         if found[0] == -math.inf:
                             return
                     if not rising:
                         break  # the rise has ended: holding longer is the same jump
+
+    def overhead(self, start: Snapshot, edge: Snapshot) -> bool:
+        """Is anything (a ceiling, spikes) above the way from ``start`` to where the run
+        leaves the ground at ``edge``, and a full jump beyond, lower than a full jump rises?
+        Only then is a jump cut short worth trying at each tick."""
+        tuning = self.world.tuning
+        rise_px = tuning.jump_speed_px_s ** 2 / (2 * tuning.gravity_px_s2)
+        beyond_px = 2 * tuning.jump_speed_px_s / tuning.gravity_px_s2 * tuning.run_speed_px_s
+        edge.restore(self.world)
+        there = self.world.player.box
+        start.restore(self.world)
+        here = self.world.player.box
+        left = min(here.left, there.left) - beyond_px
+        right = max(here.right, there.right) + beyond_px
+        top = min(here.top, there.top)
+        region = Box(left, top - rise_px, right - left, rise_px)
+        return bool(self.world.solids.shapes_in(region))
+
+    def run_until_landing(self, start: int, run: Actions) -> tuple[int, int] | None:
+        """Hold ``run`` from tick ``start`` until the player stands or reaches an Exit: the
+        ticks it took and the outcome (as :meth:`try_move` gives it); None if a life was lost
+        on the way, or the player fell where no step leads on to an Exit, or
+        :data:`MAX_FALL_TICKS` passed in the air. A timed jump that falls into
+        a pit is not kept: each of them would make a tree of falling states."""
+        player = self.world.player
+        for tick in range(1, MAX_FALL_TICKS + 1):
+            outcome = self.hold(run, start + tick - 1, 1, ())
+            if outcome or player.on_ground:
+                break
+            if self.cell() not in self.steps:
+                outcome = -1  # no way on to an Exit from here (the reach proof's steps)
+                break
+        self.moves_tried += math.ceil(tick / MOVE_TICKS) * self.weight
+        if outcome < 0 or not (outcome or player.on_ground):
+            return None
+        return tick, tick if outcome else 0
 
     def lands_soon(self) -> bool:
         """Falling, with a floor under the feet within the fall of one move."""
