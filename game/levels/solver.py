@@ -586,7 +586,7 @@ class _Search:
         a pit is not kept: each of them would make a tree of falling states."""
         player = self.world.player
         for tick in range(1, MAX_FALL_TICKS + 1):
-            outcome = self.hold(run, start + tick - 1, 1, ())
+            outcome = self.hold(run, start + tick - 1, 1, ()) or 0  # (no enemy left out)
             if outcome or player.on_ground:
                 break
             if self.cell() not in self.steps:
