@@ -4,12 +4,88 @@ with the map and is said when the search stops without a route."""
 
 from __future__ import annotations
 
+import dataclasses
+
+import pytest
+
+from game.collision.aabb import Box
 from game.levels.reach import DEFAULT_LIMITS
 from game.levels.search_budget import MIN_BUDGET, MOVES_PER_CELL, map_budget
 from game.levels.solver import MOVE_TICKS, PLAIN_SHARE, Effort, replay, solve
 from game.levels.verdict import Kind, judge
 from game.sim.inputs import Action
-from tests.test_verdicts import gap, hold, pit_under_spikes, play
+from game.sim.level import Level
+from game.sim.platforms import PlatformSpec, Route
+from tests.test_verdicts import (
+    EDGE,
+    FLOOR,
+    SPAWN,
+    Script,
+    gap,
+    hold,
+    ledge,
+    pit_under_spikes,
+    play,
+)
+
+# Where the spawn stands within a tick's run (1.5 px) decides where the last step before an
+# edge falls: from these, a run from tick 0 and a jump pressed on the tick given crosses.
+LAST_COYOTE_PLACE, LAST_COYOTE_PRESS = 0.75, 113  # the 76 px gap: the last coyote tick
+COYOTE_PLACE, COYOTE_PRESS = 0.25, 112  # the 74 px gap: a coyote tick
+
+
+def placed(level: Level, offset_px: float) -> Level:
+    """``level`` with its spawn ``offset_px`` to the right."""
+    return dataclasses.replace(level, spawn=Box(SPAWN.x + offset_px, SPAWN.y, SPAWN.w, SPAWN.h))
+
+
+def beside_a_lift(level: Level, width_px: int) -> Level:
+    """``level`` (a gap ``width_px`` wide) with a lift going up and down past the gap, above
+    the player's head: the search cannot ride it across, but a map with moving platforms is
+    searched by beams, which wait for platforms."""
+    lift = PlatformSpec(Route(((EDGE + width_px + 64, FLOOR - 120),
+                               (EDGE + width_px + 64, FLOOR - 60))), 32.0, 8.0, 40.0)
+    return dataclasses.replace(level, platforms=(lift,))
+
+
+def widest_gap() -> Level:
+    return placed(gap(DEFAULT_LIMITS.coyote_gap_px), LAST_COYOTE_PLACE)
+
+
+def coyote_gap() -> Level:
+    return placed(gap(74), COYOTE_PLACE)
+
+
+# Known-truth maps, each with a script that wins it in the game.
+KNOWN: dict[str, tuple[Level, Script]] = {
+    "76 px gap, jump on the last coyote tick": (
+        widest_gap(), hold(jumps=[(LAST_COYOTE_PRESS, 40)])),
+    "76 px gap beside a lift": (
+        beside_a_lift(widest_gap(), DEFAULT_LIMITS.coyote_gap_px),
+        hold(jumps=[(LAST_COYOTE_PRESS, 40)])),
+    "74 px gap, coyote jump": (coyote_gap(), hold(jumps=[(COYOTE_PRESS, 40)])),
+    "74 px gap beside a lift": (beside_a_lift(coyote_gap(), 74),
+                                hold(jumps=[(COYOTE_PRESS, 40)])),
+    "44 px ledge": (ledge(DEFAULT_LIMITS.ledge_px), hold(jumps=[(100, 40)])),
+    "pit under spikes, jump held 7 ticks": (pit_under_spikes(), hold(jumps=[(113, 7)])),
+}
+
+
+@pytest.mark.parametrize("name", sorted(KNOWN))
+def test_each_known_map_is_won_by_its_script_and_solved_within_its_own_budget(
+        name: str) -> None:
+    level, script = KNOWN[name]
+    assert play(level, script, ticks=2_000).won
+    solution = solve(level)
+    assert solution.found and solution.own_budget, solution.moves_tried
+    assert solution.moves_tried <= solution.budget
+    assert replay(level.path, solution.held, level)[0]
+
+
+def test_the_widest_gap_is_crossed_only_from_the_last_coyote_tick() -> None:
+    level, _ = KNOWN["76 px gap, jump on the last coyote tick"]
+    assert not play(level, hold(jumps=[(LAST_COYOTE_PRESS - 1, 40)]), ticks=2_000).won
+    assert not play(level, hold(jumps=[(LAST_COYOTE_PRESS + 1, 40)]), ticks=2_000).won
 
 
 def test_the_pit_under_spikes_is_solved_by_a_jump_held_an_exact_number_of_ticks() -> None:
