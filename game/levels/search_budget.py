@@ -16,7 +16,7 @@ needs more, as the search also walks the corridors that lead nowhere.
 from __future__ import annotations
 
 MOVES_PER_CELL = 12  # moves (6 ticks each) the search may try for each cell it may reach
-MIN_BUDGET = 6_000  # moves, however small the map
+MIN_BUDGET = 9_000  # moves, however small the map
 MAX_BUDGET = 300_000  # moves, however large the map (about two minutes of a small map's work)
 
 
@@ -24,6 +24,6 @@ def map_budget(cells: int) -> int:
     """The moves the search may try on a map whose route may pass through ``cells`` cells.
 
     >>> map_budget(10), map_budget(1_000), map_budget(10**9)
-    (6000, 12000, 300000)
+    (9000, 12000, 300000)
     """
     return max(MIN_BUDGET, min(MAX_BUDGET, MOVES_PER_CELL * cells))
