@@ -35,7 +35,7 @@ COLS, ROWS, TILE = 40, 14, 16
 WIDTH, FLOOR = COLS * TILE, 10 * TILE  # the floor's top
 EDGE = 12 * TILE  # where a gap or a ledge begins
 SPAWN = Box(32, FLOOR - 14, 12, 14)
-EFFORT = Effort(budget=4_000)  # small: these maps are short, and an undecided is honest
+EFFORT = Effort(budget=6_000)  # small: these maps are short, and an undecided is honest
 
 
 def exit_on(top: float) -> Box:

@@ -7,8 +7,8 @@ it; no PATH checks the shipped campaign. Never a traceback, whatever the input. 
 loads is then *judged* (:mod:`game.levels.verdict`): **solved** (a route reaches an Exit
 when replayed), **impossible** (no open path joins spawn and Exit, or the Exit lies outside
 the player's reach: an error), or **not decided** (the search spent its budget of work,
-``--budget N`` moves, or ``--seconds S`` if given, and nothing proved it impossible: a
-``warning: not decided`` line that says how far it got and how to search further).
+the map's own or ``--budget N`` moves, or ``--seconds S`` if given, and nothing proved it
+impossible: a ``warning: not decided`` line that says how far it got and how to search further).
 ``--proof SCRIPT`` replays a recorded win instead of searching; ``--no-solve`` judges
 nothing; ``--format json`` prints one JSON document instead of lines; ``--jobs N`` checks
 up to N maps at once (default: one per core), with the same lines in the same order. The
@@ -58,9 +58,10 @@ from game.levels.outputs import image_suffix, unwritable, write_output, write_su
 from game.levels.reach import limits_of, measure_reach, own_reaches
 from game.levels.reading import reason
 from game.levels.route_picture import draw_route
+from game.levels.search_budget import MOVES_PER_CELL
 from game.levels.shipped import LEVELS_DIR
 from game.levels.side_by_side import Terminated, check_maps, usable_cores
-from game.levels.solver import DEFAULT_BUDGET, Effort
+from game.levels.solver import Effort
 from game.levels.verdict import Kind, judge
 from game.sim.tuning import TICK_HZ, Tuning
 from game.sim.whole_numbers import NumberTextError, quoted, read_whole
@@ -323,9 +324,10 @@ _jobs = _positive("maps")
 
 
 def _add_search_options(parser: argparse.ArgumentParser, seconds_flags: list[str]) -> None:
-    parser.add_argument("--budget", type=_budget, default=DEFAULT_BUDGET, metavar="N",
+    parser.add_argument("--budget", type=_budget, default=None, metavar="N",
                         help="the most moves the search may try on a map, the same on any "
-                        f"machine (default {DEFAULT_BUDGET:,}); more decides more maps")
+                        f"machine (default: the map's own, {MOVES_PER_CELL} for each cell "
+                        "its route may pass through); more decides more maps")
     parser.add_argument(*seconds_flags, dest="seconds", type=_seconds, default=None,
                         metavar="S", help="also stop a map's search after S seconds of wall "
                         "time (default: no limit; a limit in seconds may decide differently "

@@ -185,10 +185,11 @@ def judge(level: Level, effort: Effort, command: str = "python -m game.levels") 
     if solution.timed_out and effort.seconds is not None:
         bound = f"its {effort.seconds:g} s"
     elif solution.out_of_budget:
-        bound = f"its budget of {effort.budget:,} moves"
+        whose = "this map's budget" if solution.own_budget else "its budget"
+        bound = f"{whose} of {solution.budget:,} moves"
     else:
         bound = "every move its beams kept"
-    more = max(effort.budget * 4, solution.moves_tried * 4)
+    more = max(solution.budget * 4, solution.moves_tried * 4)
     why = (f"the proof of impossibility does not cover {' nor '.join(unbounded)}"
            if unbounded else "nothing proves the map impossible")
     if exact_unbounded:
