@@ -11,12 +11,12 @@ from pathlib import Path
 
 import pytest
 
+from game.checker.checking import Options, check_map
+from game.checker.jump_envelope import air_envelope, exact_reach
+from game.checker.reach import DEFAULT_LIMITS, Limits, limits_of
+from game.checker.solver import Effort
+from game.checker.verdict import Kind, judge, prove_impossible
 from game.collision.aabb import Box
-from game.levels.checking import Options, check_map
-from game.levels.jump_envelope import air_envelope, exact_reach
-from game.levels.reach import DEFAULT_LIMITS, Limits, limits_of
-from game.levels.solver import Effort
-from game.levels.verdict import Kind, judge, prove_impossible
 from game.sim.level import EnemySpec, Level
 from game.sim.tuning import Tuning
 from game.sim.world import World

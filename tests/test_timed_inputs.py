@@ -8,11 +8,11 @@ import dataclasses
 
 import pytest
 
+from game.checker.reach import DEFAULT_LIMITS
+from game.checker.search_budget import MIN_BUDGET, MOVES_PER_CELL, map_budget
+from game.checker.solver import MOVE_TICKS, PLAIN_SHARE, Effort, replay, solve
+from game.checker.verdict import Kind, judge
 from game.collision.aabb import Box
-from game.levels.reach import DEFAULT_LIMITS
-from game.levels.search_budget import MIN_BUDGET, MOVES_PER_CELL, map_budget
-from game.levels.solver import MOVE_TICKS, PLAIN_SHARE, Effort, replay, solve
-from game.levels.verdict import Kind, judge
 from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route

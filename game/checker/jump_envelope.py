@@ -1,9 +1,9 @@
 """The pixel-exact reach: a proof of impossibility that is exact at the measured limits.
 
-Where it sits: :func:`game.levels.verdict.prove_impossible` asks it when the cell fill of
-:mod:`game.levels.reachable` reaches an Exit. The fill works in whole cells, so it lets a
+Where it sits: :func:`game.checker.verdict.prove_impossible` asks it when the cell fill of
+:mod:`game.checker.reachable` reaches an Exit. The fill works in whole cells, so it lets a
 jump go about a tile further than the game does; this proof works in pixels, so a gap one
-pixel wider than the widest the player crosses (:func:`game.levels.reach.measure_limits`)
+pixel wider than the widest the player crosses (:func:`game.checker.reach.measure_limits`)
 or a ledge one pixel higher than the highest it lands on is proven out of reach. Both are
 over-approximations: a map is impossible when either leaves the Exit out.
 
@@ -58,10 +58,10 @@ from functools import lru_cache
 from itertools import pairwise
 from pathlib import Path
 
+from game.checker.reachable import Cell, jump_rise, starts
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import TileGrid
-from game.levels.reachable import Cell, jump_rise, starts
 from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.player import run_change_px_s

@@ -20,10 +20,10 @@ missing one a pixel wider (plain: jump pressed while on the ground; coyote: pres
 tick, the last coyote tick included).
 
 Every measurement is bounded by work, counted in ticks of play: the test levels are sized
-from the jump the tuning gives (worked out with :func:`game.levels.reachable.jump_rise`),
+from the jump the tuning gives (worked out with :func:`game.checker.reachable.jump_rise`),
 at most :data:`MAX_START_PLACES` start places are tried across one tick's run (and, for
 the gaps, the one whose run stands last just short of the edge: the furthest any run
-leaves from, so the widest gap is the bound :mod:`game.levels.jump_envelope` proves), and
+leaves from, so the widest gap is the bound :mod:`game.checker.jump_envelope` proves), and
 :func:`limits_of` stops a measurement after :data:`MAX_MEASURE_TICKS` ticks and says so
 (the default physics take about 28,000; a floaty jump, 30 s in the air, takes more; making
 a test level counts too, a tick for every :data:`CELLS_PER_TICK` of its cells). The
@@ -48,10 +48,10 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
+from game.checker.reachable import jump_rise
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import TileGrid
-from game.levels.reachable import jump_rise
 from game.sim.inputs import Action, Actions
 from game.sim.level import Level
 from game.sim.snapshot import Snapshot

@@ -1,6 +1,6 @@
 """When are two states of a search "the same"? The key the solver files them under.
 
-Where it sits: :mod:`game.levels.solver` keeps only the first state it meets under each key,
+Where it sits: :mod:`game.checker.solver` keeps only the first state it meets under each key,
 so the key decides how much of the game's state space the search may skip.
 
 What it teaches: **pruning on a grid.** Two states whose player is within a few pixels and a

@@ -33,23 +33,23 @@ What it teaches: a **beam search** over a deterministic simulation.
   tick from :data:`EARLY_TICKS` before the run leaves the ground to the last coyote tick,
   held for each number of ticks of the rise; in the air just before landing, jump pressed
   so the jump buffer makes it leave on the first tick on the ground. This stage tells
-  apart places :data:`~game.levels.search_key.FINE_PLACE_PX` apart.
-* **The budget grows with the map** (:mod:`game.levels.search_budget`): moves for each
+  apart places :data:`~game.checker.search_key.FINE_PLACE_PX` apart.
+* **The budget grows with the map** (:mod:`game.checker.search_budget`): moves for each
   cell the reach proof's fill reached, unless ``--budget N`` gives one.
 * **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
   state, step the world, keep the child's state.
-* **Enemies go their own way** (:mod:`game.levels.enemy_timeline`): where an enemy is at a
+* **Enemies go their own way** (:mod:`game.checker.enemy_timeline`): where an enemy is at a
   tick does not depend on the player, so the first move through a tick writes the enemies
   down and later moves leave out those far from the player, putting them back afterwards.
 * **A layer per move.** All children of the current beam are scored by how far they still
   are from an Exit, and the best :attr:`Effort.width` survive, at most :data:`PER_CELL` of
   them in any one tile while others are left: a beam whose states all stand in one place is
   one state wide, and stuck together. Two states with the same key
-  (:mod:`game.levels.search_key`: about the same place and speed, the nearby moving
+  (:mod:`game.checker.search_key`: about the same place and speed, the nearby moving
   platforms at the same point of their paths) are the same state: only the first is kept,
   so the beam cannot go round in circles.
 * **The score** is the number of steps from the player's cell to an Exit along the moves
-  of the reach proof (:func:`game.levels.reachable.steps_to_exit`): it knows that a ledge
+  of the reach proof (:func:`game.checker.reachable.steps_to_exit`): it knows that a ledge
   too high must be climbed from elsewhere, and a state from which no step leads on to an
   Exit (at the bottom of a pit) is dropped. The beams add a penalty for falling with no
   floor below: standing at the edge of a pit waiting for a platform is better than jumping
@@ -71,8 +71,8 @@ What it teaches: a **beam search** over a deterministic simulation.
   route that needs a life lost (spikes crossed while the respawn's protection lasts) is not
   put off behind every state that kept its lives.
 
-The search never proves a map *impossible*: :mod:`game.levels.reachable` does that, and
-:mod:`game.levels.verdict` asks it first. Everything is deterministic: the search is bounded
+The search never proves a map *impossible*: :mod:`game.checker.reachable` does that, and
+:mod:`game.checker.verdict` asks it first. Everything is deterministic: the search is bounded
 by **work**, the moves it tries (:attr:`Effort.budget`), so the same map and options give the
 same script and the same verdict on any machine, however loaded. On a crowded map a move
 costs more (every enemy and platform is stepped each tick, every coin is looked at and
@@ -95,13 +95,10 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from game.collision.aabb import Box
-from game.collision.shapes import TileKind
-from game.levels.enemy_timeline import Away, EnemyTimeline
-from game.levels.loader import load_level
-from game.levels.reachable import steps_to_exit
-from game.levels.search_budget import map_budget
-from game.levels.search_key import (
+from game.checker.enemy_timeline import Away, EnemyTimeline
+from game.checker.reachable import steps_to_exit
+from game.checker.search_budget import map_budget
+from game.checker.search_key import (
     FINE_PLACE_PX,
     SAME_PLACE_PX,
     StateKey,
@@ -109,6 +106,9 @@ from game.levels.search_key import (
     route_is_near,
     state_key,
 )
+from game.collision.aabb import Box
+from game.collision.shapes import TileKind
+from game.levels.loader import load_level
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, Actions, InputEvent, Recorder
 from game.sim.level import Level
@@ -171,7 +171,7 @@ class Effort:
     """How hard to look: the beam's width where it is not stuck, and the limits on the work."""
 
     budget: int | None = None  # moves the whole search may try (None: the map's own budget,
-    #                            :func:`game.levels.search_budget.map_budget`)
+    #                            :func:`game.checker.search_budget.map_budget`)
     greedy_moves: int = 14_000  # of those, the most the best-first search may try first
     width: int = 3  # the beam's width where it is not stuck
     seconds: float | None = None  # an extra wall-clock limit (None: none, the default)
@@ -319,7 +319,7 @@ class _Search:
         return float(steps)
 
     def key(self, choice: Actions) -> StateKey:
-        """What makes two states the same for the search (:mod:`game.levels.search_key`)."""
+        """What makes two states the same for the search (:mod:`game.checker.search_key`)."""
         return state_key(self.world, choice, self.routes,
                          FINE_PLACE_PX if self.timed else SAME_PLACE_PX)
 
@@ -850,7 +850,7 @@ def replay(level_path: Path, held: Sequence[Actions], level: Level | None = None
 def solve(level: Level, effort: Effort | None = None,
           steps: dict[tuple[int, int], int] | None = None) -> Solution:
     """Search ``level`` for a route from the spawn to an Exit (``steps``: the reach proof's
-    :attr:`~game.levels.reachable.Reach.steps`, when worked out already; empty when it gave
+    :attr:`~game.checker.reachable.Reach.steps`, when worked out already; empty when it gave
     none, so the score is the open cells' :func:`distances_to_exit`)."""
     search = _Search(level, effort or Effort(), steps)
     found = search.run() if level.exits else None

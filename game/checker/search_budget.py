@@ -1,7 +1,7 @@
 """How much work the solver may do on one map: a budget of moves that grows with the map.
 
-Where it sits: :func:`game.levels.solver.solve` asks :func:`map_budget` for the budget of a
-map unless ``--budget N`` gives one; :mod:`game.levels.verdict` says it when the search
+Where it sits: :func:`game.checker.solver.solve` asks :func:`map_budget` for the budget of a
+map unless ``--budget N`` gives one; :mod:`game.checker.verdict` says it when the search
 stops without a route ("searched N moves of this map's budget of M").
 
 What it teaches: **bound work by the size of the problem.** A fixed number of moves is too

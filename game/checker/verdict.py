@@ -1,8 +1,8 @@
 """Can this map be won? Three honest answers: solved, impossible, or not decided.
 
-Where it sits: between the checker's command line (:mod:`game.levels.__main__`) and the
-two tools that answer, :mod:`game.levels.reachable` (which can prove a map impossible) and
-:mod:`game.levels.solver` (which can prove it solved, by finding a route that replays).
+Where it sits: between the checker's command line (:mod:`game.checker.cli`) and the
+two tools that answer, :mod:`game.checker.reachable` (which can prove a map impossible) and
+:mod:`game.checker.solver` (which can prove it solved, by finding a route that replays).
 
 What it teaches: keep what was *proven* apart from what was merely *not found*.
 
@@ -10,11 +10,11 @@ What it teaches: keep what was *proven* apart from what was merely *not found*.
   designer's own recorded win given with ``--proof``).
 * **Impossible**: no open path of cells joins the spawn and an Exit, or the Exit lies
   outside everything the player's jumps could touch: by the cell fill, or by the
-  pixel-exact reach of :mod:`game.levels.jump_envelope` (a gap or a ledge one pixel past
+  pixel-exact reach of :mod:`game.checker.jump_envelope` (a gap or a ledge one pixel past
   the measured limits). All are over-approximations, so they never call a winnable map
   impossible, and an Exit any of them leaves out is out of reach. A reach is a proof only
-  when it bounds every mechanic on the way (:attr:`game.levels.reachable.Reach.unbounded`,
-  :attr:`game.levels.jump_envelope.Exact.unbounded`): where one is left unbounded the map
+  when it bounds every mechanic on the way (:attr:`game.checker.reachable.Reach.unbounded`,
+  :attr:`game.checker.jump_envelope.Exact.unbounded`): where one is left unbounded the map
   is not decided, and the line names the mechanic. Where one tile layer's Solid tiles
   close the way (taking them away opens it, to the same proof), the line names the layer
   and points at one of its tiles.
@@ -31,12 +31,12 @@ from dataclasses import dataclass, replace
 from enum import Enum
 from pathlib import Path
 
+from game.checker.jump_envelope import Exact, exact_reach, nearest_reached
+from game.checker.reachable import Cell, Reach, open_path, reachable
+from game.checker.solver import Effort, Solution, solve
+from game.checker.wall_layers import closed_cells_by_layer
 from game.collision.shapes import TileKind
 from game.collision.tile_grid import TileGrid
-from game.levels.jump_envelope import Exact, exact_reach, nearest_reached
-from game.levels.reachable import Cell, Reach, open_path, reachable
-from game.levels.solver import Effort, Solution, solve
-from game.levels.wall_layers import closed_cells_by_layer
 from game.sim.campaign import Campaign
 from game.sim.inputs import InputScript
 from game.sim.level import Level
@@ -223,7 +223,7 @@ def replay_proof(level: Level, script: InputScript) -> tuple[bool, int]:
 def judge_proof(level: Level, script_path: Path, script: InputScript) -> Verdict:
     """SOLVED when the recorded script wins the level; else a finding about the script.
     ``script``: the script read from ``script_path`` (through the one bounded open,
-    :func:`game.levels.checking.read_proof`)."""
+    :func:`game.checker.checking.read_proof`)."""
     won, ticks = replay_proof(level, script)
     if won:
         return Verdict(Kind.SOLVED, None, f"solved: the recorded win {script_path.name} "
