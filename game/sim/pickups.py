@@ -1,10 +1,9 @@
 """Things the player touches rather than collides with: coins, exits and checkpoints.
 
 Where it sits: steps 6 and 7 of a tick (:meth:`game.sim.world.World.step`). These are triggers,
-not solids: they never stop a body. Coins are taken with ``pygame.sprite.groupcollide``,
-whose ``collided=`` test compares each coin's float ``box`` with the path the player swept
-this tick (its ``rect`` is only the picture); exits and checkpoints go through the contact
-tracker, which reports when a touch starts.
+not solids: they never stop a body. A coin is taken (it leaves its group) when the path the
+player swept this tick crosses its float ``box`` (its ``rect`` is only the picture); exits
+and checkpoints go through the contact tracker, which reports when a touch starts.
 
 Each is a :class:`~game.sim.sprite.BoxSprite`: a coin spins, its picture centred on its box;
 an exit or checkpoint is a flag standing on the bottom of its box, greyed until reached.
