@@ -22,6 +22,7 @@ trigger is tested at all.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import pygame
@@ -64,25 +65,16 @@ class TriggerCells:
 
     def reached_by(self, left: float, top: float, right: float, bottom: float) -> bool:
         """Does the region reach a cell that holds a trigger?"""
-        rows_of = self.rows
-        if not rows_of:
-            return False
         try:
             first_col, last_col = math.floor(left / self.tile_w), math.floor(right / self.tile_w)
             first_row, last_row = math.floor(top / self.tile_h), math.floor(bottom / self.tile_h)
         except (ValueError, OverflowError):
             return True  # a region with no cells to name: let the exact tests decide
-        if last_col - first_col + 1 > len(rows_of):
-            # A region wider than all the filed columns: look at those instead.
-            return any(first_col <= col <= last_col and first_row <= row <= last_row
-                       for col, rows in rows_of.items() for row in rows)
-        for col in range(first_col, last_col + 1):
-            rows = rows_of.get(col)
-            if rows is not None:
-                for row in rows:
-                    if first_row <= row <= last_row:
-                        return True
-        return False
+        columns: Iterable[int] = range(first_col, last_col + 1)
+        if last_col - first_col + 1 > len(self.rows):  # wider than all the filed columns
+            columns = [col for col in self.rows if first_col <= col <= last_col]
+        return any(first_row <= row <= last_row
+                   for col in columns for row in self.rows.get(col, ()))
 
 
 class Trigger(BoxSprite):

@@ -365,9 +365,9 @@ class World:
                          hazards: ShapeSource) -> set[tuple[ContactKey, ContactKey]]:
         """The pairs (player, thing) whose boxes the player's ``path`` overlapped this tick.
 
-        ``edges`` bound the whole path: an enemy outside them is not tested further, and the
-        spikes are looked up (in ``hazards``) only when they reach a cell that holds one;
-        exits and checkpoints are tested only when the path is ``near_trigger``.
+        ``edges`` bound the whole path: the spikes are looked up (in ``hazards``) only when
+        they reach a cell that holds one; exits and checkpoints are tested only when the path
+        is ``near_trigger``.
         """
         pairs: set[tuple[ContactKey, ContactKey]] = set()
         if near_trigger:
@@ -375,12 +375,9 @@ class World:
                       if crossed(path, goal)}
             pairs |= {(PLAYER_KEY, ("checkpoint", number))
                       for number, flag in enumerate(self.checkpoints) if crossed(path, flag)}
-        left, top, right, bottom = edges
-        for number, enemy in self.enemy_by_number.items():
-            x, y, w, h = enemy.box
-            if (x < right and left < x + w and y < bottom and top < y + h and enemy.alive()
-                    and crossed(path, enemy)):
-                pairs.add((PLAYER_KEY, ("enemy", number)))
+        pairs |= {(PLAYER_KEY, ("enemy", number))
+                  for number, enemy in self.enemy_by_number.items()
+                  if enemy.alive() and crossed(path, enemy)}
         if not self.hazard_cells.reached_by(*edges):
             return pairs  # no spike anywhere near the path
         cols = self.grid.cols
