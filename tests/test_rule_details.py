@@ -15,7 +15,16 @@ import pytest
 
 # Everything the tests use from the game, in one place.
 from game.collision.aabb import RECT_MAX, RECT_MIN, Box, rects_overlap
-from game.collision.axis_sweep import Hit, Move, Side, move_x, move_y, slide_past_ceiling_corner
+from game.collision.axis_sweep import (
+    SKY_LIMIT_PX,
+    Hit,
+    Move,
+    Side,
+    move_body,
+    move_x,
+    move_y,
+    slide_past_ceiling_corner,
+)
 from game.collision.free_place import nearest_free_place, penetration_depth, touching
 from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import CountedGrid, TileGrid
@@ -522,7 +531,7 @@ def test_a_bounce_is_a_fall_upwards_that_letting_go_does_not_cut() -> None:
     player = player_in_the_air()
     player.on_ground, player.rising_from_jump = True, True
     player.bounce(200.0)
-    assert player.vy == -200.0 and not player.on_ground and not player.rising_from_jump
+    assert player.vy == -200.0 and player.on_ground is False and player.rising_from_jump is False
     player.decide(JUMP, TUNING)          # in the air after a bounce: a press is no jump
     assert player.vy == -200.0 + TUNING.gravity_px_s2 * TUNING.tick_s
 
@@ -535,6 +544,7 @@ def test_a_respawn_starts_still_in_the_air_with_no_jump_remembered() -> None:
     assert player.box == Box(100, 10, 12, 14)
     assert (player.vx, player.vy, player.on_ground, player.rising_from_jump) == (0, 0, False,
                                                                                  False)
+    assert player.coyote_ticks_left == player.jump_buffer_ticks_left == 0
     assert player.decide(JUMP, TUNING) is False               # no coyote time after it
     assert player.invulnerable_ticks_left == 89
     for _ in range(88):
@@ -542,3 +552,83 @@ def test_a_respawn_starts_still_in_the_air_with_no_jump_remembered() -> None:
     assert player.invulnerable
     player.decide(NOTHING, TUNING)
     assert not player.invulnerable
+
+
+def test_a_respawn_asked_for_no_safe_time_gives_none() -> None:
+    player = player_in_the_air()
+    player.respawn(Box(100, 10, 12, 14))
+    assert player.invulnerable_ticks_left == 0 and not player.invulnerable
+
+
+# --- a body's whole move ------------------------------------------------------------------
+
+def test_a_path_crosses_only_a_region_it_overlaps_with_area() -> None:
+    """The path (x 20..40, y 20..30) crosses a region only by strict overlap: a region of no
+    width or height inside it, or one touching any of its four sides, is not crossed; one
+    under a pixel wide or high inside it is."""
+    moves = move_body(TileGrid(10, 10, T, T), Box(20, 20, 10, 10), 10.0, 0.0)
+    assert moves.x.path_edges == (20, 20, 40, 30)
+    for empty in (Box(25, 22, 0, 5), Box(25, 22, 5, 0), Box(25, 22, 0, 0)):
+        assert not moves.crosses(empty), empty
+    for thin in (Box(25, 22, 0.5, 5), Box(25, 22, 5, 0.5)):
+        assert moves.crosses(thin), thin
+    for touching_a_side in (Box(10, 22, 10, 5), Box(40, 22, 5, 5), Box(25, 10, 5, 10),
+                            Box(25, 30, 5, 5)):
+        assert not moves.crosses(touching_a_side), touching_a_side
+
+
+def test_a_move_by_default_lands_on_a_one_way_top_and_slides_past_no_corner() -> None:
+    one_way = grid_of(*((c, 5, Box(c * T, 5 * T, T, T), ONE_WAY) for c in range(10)))
+    landed = move_body(one_way, Box(20, 60, 12, 14), 0.0, 10.0)
+    assert landed.y.box.y == 66 and landed.ground is not None
+    ceiling = grid_of((3, 2, Box(48, 32, 16, 16), SOLID))
+    bumped = move_body(ceiling, Box(63.5, 50, 12, 14), 0.0, -10.0)   # clipped by 0.5 px
+    assert bumped.x.box.x == 63.5 and bumped.y.hit is not None
+    assert bumped.y.hit.side is Side.TOP
+
+
+def test_below_the_map_a_fall_stops_at_its_bottom_edge_and_the_sky_ends_far_above() -> None:
+    grid = TileGrid(10, 10, T, T)
+    fell = move_body(grid, Box(20, 150, 12, 14), 0.0, 30.0)
+    assert fell.y.box.y == grid.height_px and fell.y.hit is None and fell.ground is None
+    flung = move_body(grid, Box(20, -SKY_LIMIT_PX + 5, 12, 14), 0.0, -30.0)
+    assert flung.y.box.y == -SKY_LIMIT_PX
+    inside = move_body(grid, Box(20, 100, 12, 14), 0.0, 10.0)
+    assert inside.y.box.y == 110
+
+
+def test_a_corner_slide_keeps_the_wall_the_run_hit_and_sweeps_both_steps() -> None:
+    """Running right into a wall while rising into a ceiling's corner: the slide goes left,
+    and the x move still says it hit the wall (so the run stops) and sweeps the run and the
+    slide."""
+    grid = grid_of((3, 2, Box(60, 32, 16, 16), SOLID), (4, 3, Box(64, 48, 16, 16), SOLID))
+    moves = move_body(grid, Box(50, 50, 12, 14), 5.0, -10.0, corner_px=4.0)
+    assert moves.x.box.x == 48 and moves.y.box.y == 40 and moves.y.hit is None
+    assert moves.x.hit is not None and moves.x.hit.side is Side.RIGHT and moves.x.hit.face == 64
+    assert moves.x.swept == Box(48, 50, 19, 14)
+
+
+def test_a_fall_onto_a_floor_s_edge_is_no_corner_slide() -> None:
+    grid = grid_of((3, 5, Box(48, 80, 16, 16), SOLID))
+    assert slide_past_ceiling_corner(grid, Box(61, 60, 12, 14), 10.0, 4.0) is None
+
+
+def test_the_gap_between_boxes_is_along_the_farther_axis_and_none_when_they_touch() -> None:
+    box = Box(0, 0, 10, 10)
+    assert box.gap(Box(25, 3, 10, 10)) == 15                  # to the right
+    assert box.gap(Box(-17, 3, 10, 10)) == 7                  # to the left
+    assert box.gap(Box(3, 14, 10, 10)) == 4                   # below
+    assert box.gap(Box(3, -22, 10, 10)) == 12                 # above
+    assert box.gap(Box(16, -30, 10, 10)) == 20                # the farther axis counts
+    assert box.gap(Box(10, 0, 10, 10)) == 0.0 and box.gap(Box(5, 5, 2, 2)) == 0.0
+
+
+def test_a_body_standing_still_or_dropping_through_finds_its_ground_by_the_probe() -> None:
+    """A move that does not fall (none at all, or a rise) asks the probe for the ground:
+    the floor under still feet, none under rising ones, and no one-way top under feet
+    dropping through it."""
+    assert move_body(floor_grid(), Box(20, 66, 12, 14), 3.0, 0.0).ground is not None
+    assert move_body(floor_grid(), Box(20, 66, 12, 14), 0.0, -5.0).ground is None
+    one_way = grid_of(*((c, 5, Box(c * T, 5 * T, T, T), ONE_WAY) for c in range(10)))
+    assert move_body(one_way, Box(20, 66, 12, 14), 0.0, 0.0).ground is not None
+    assert move_body(one_way, Box(20, 66, 12, 14), 0.0, 0.0, through_one_way=True).ground is None
