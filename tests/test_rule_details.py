@@ -591,8 +591,10 @@ def test_below_the_map_a_fall_stops_at_its_bottom_edge_and_the_sky_ends_far_abov
     grid = TileGrid(10, 10, T, T)
     fell = move_body(grid, Box(20, 150, 12, 14), 0.0, 30.0)
     assert fell.y.box.y == grid.height_px and fell.y.hit is None and fell.ground is None
+    assert fell.y.start == Box(20, 150, 12, 14) and fell.y.swept == Box(20, 150, 12, 44)
     flung = move_body(grid, Box(20, -SKY_LIMIT_PX + 5, 12, 14), 0.0, -30.0)
-    assert flung.y.box.y == -SKY_LIMIT_PX
+    assert flung.y.box == Box(20, -SKY_LIMIT_PX, 12, 14)
+    assert flung.y.swept == Box(20, -SKY_LIMIT_PX - 25, 12, 44)
     inside = move_body(grid, Box(20, 100, 12, 14), 0.0, 10.0)
     assert inside.y.box.y == 110
 
