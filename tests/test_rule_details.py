@@ -455,7 +455,8 @@ def test_a_jump_leaves_the_ground_and_is_reported_once() -> None:
     player = player_in_the_air()
     player.on_ground = True
     assert player.decide(JUMP, TUNING) is True
-    assert not player.on_ground and player.rising_from_jump
+    assert player.on_ground is False and player.rising_from_jump
+    assert player.coyote_ticks_left == player.jump_buffer_ticks_left == 0   # spent on it
     assert player.vy == -TUNING.jump_speed_px_s + TUNING.gravity_px_s2 * TUNING.tick_s
     player.on_ground = True                                   # as if it landed at once
     assert player.decide(JUMP, TUNING) is False               # still held: no new press
@@ -515,8 +516,8 @@ def test_hitting_a_wall_stops_the_run() -> None:
 
 
 @pytest.mark.parametrize(("side", "vy", "stopped"), [
-    (Side.BOTTOM, 0.5, True), (Side.BOTTOM, -0.5, False),
-    (Side.TOP, -0.5, True), (Side.TOP, 0.5, False)])
+    (Side.BOTTOM, 0.5, True), (Side.BOTTOM, -0.5, False), (Side.BOTTOM, 0.0, False),
+    (Side.TOP, -0.5, True), (Side.TOP, 0.5, False), (Side.TOP, 0.0, False)])
 def test_a_floor_stops_a_fall_and_a_ceiling_a_rise_but_neither_the_other(
         side: Side, vy: float, stopped: bool) -> None:
     player = player_in_the_air()
@@ -634,3 +635,47 @@ def test_a_body_standing_still_or_dropping_through_finds_its_ground_by_the_probe
     one_way = grid_of(*((c, 5, Box(c * T, 5 * T, T, T), ONE_WAY) for c in range(10)))
     assert move_body(one_way, Box(20, 66, 12, 14), 0.0, 0.0).ground is not None
     assert move_body(one_way, Box(20, 66, 12, 14), 0.0, 0.0, through_one_way=True).ground is None
+
+
+def test_a_new_player_is_still_and_remembers_no_jump_no_drop_and_no_safe_time() -> None:
+    player = Player(Box(0, 0, 12, 14), TUNING)
+    assert (player.vx, player.vy, player.facing) == (0.0, 0.0, 1)
+    assert (player.coyote_ticks_left, player.jump_buffer_ticks_left, player.drop_ticks_left,
+            player.invulnerable_ticks_left) == (0, 0, 0, 0)
+    assert player.rising_from_jump is False and not player.invulnerable
+    assert (player.coyote_ticks, player.jump_buffer_ticks) == (TUNING.coyote_ticks,
+                                                               TUNING.jump_buffer_ticks)
+
+
+def test_dropping_through_a_one_way_top_spends_the_jump_press() -> None:
+    player = player_in_the_air()
+    player.on_ground = True
+    player.standing_on = TileShape(Box(0, 14, T, T), ONE_WAY, 0, 1)
+    down_jump: Actions = frozenset({Action.DOWN, Action.JUMP})
+    assert player.decide(down_jump, TUNING) is False
+    assert player.dropping_through and player.jump_buffer_ticks_left == 0
+
+
+def test_a_held_jump_whose_rise_ends_on_exactly_0_px_s_is_no_longer_rising() -> None:
+    """Jump speed 300 px/s and gravity 15 px/s a tick: the rise ends on exactly 0 px/s, and
+    from that tick on the jump can no longer be cut: it is over."""
+    tuning = Tuning(jump_speed_px_s=300.0, gravity_px_s2=900.0)
+    player = Player(Box(0, 0, 12, 14), tuning)
+    player.on_ground = True
+    player.decide(JUMP, tuning)
+    player.on_ground = False
+    while player.vy < 0:
+        assert player.rising_from_jump
+        player.decide(JUMP, tuning)
+    assert player.vy == 0.0 and player.rising_from_jump       # the last rising tick
+    player.decide(JUMP, tuning)
+    assert player.rising_from_jump is False and player.vy == 15.0
+
+
+def test_deep_in_rock_the_nearer_of_two_far_free_places_is_taken() -> None:
+    """Rock everywhere but a few pockets: the body is 96 px from open air off the map's left
+    side and 97.5 px from a pocket up and to the right, and goes to the nearer."""
+    pockets = {(11, 5), (13, 9), (14, 9), (14, 14), (14, 15), (15, 15)}
+    grid = grid_of(*((c, r, Box(c * T, r * T, T, T), SOLID) for c in range(16)
+                     for r in range(16) if (c, r) not in pockets), cols=16, rows=16)
+    assert nearest_free_place(grid, Box(84, 114.25, 12, 14)) == Box(-12, 114.25, 12, 14)
