@@ -26,7 +26,7 @@ from game.collision.axis_sweep import (
     slide_past_ceiling_corner,
 )
 from game.collision.free_place import nearest_free_place, penetration_depth, touching
-from game.collision.shapes import TileKind, TileShape
+from game.collision.shapes import Entry, TileKind, TileShape
 from game.collision.tile_grid import CountedGrid, TileGrid
 from game.sim.inputs import NOTHING, Action, Actions
 from game.sim.platforms import Platform, PlatformIndex, PlatformSpec, Route
@@ -679,3 +679,30 @@ def test_deep_in_rock_the_nearer_of_two_far_free_places_is_taken() -> None:
     grid = grid_of(*((c, r, Box(c * T, r * T, T, T), SOLID) for c in range(16)
                      for r in range(16) if (c, r) not in pockets), cols=16, rows=16)
     assert nearest_free_place(grid, Box(84, 114.25, 12, 14)) == Box(-12, 114.25, 12, 14)
+
+
+def test_a_shape_one_pixel_wide_or_high_collides() -> None:
+    grid = grid_of((2, 2, Box(32, 32, 1, 16), SOLID), (4, 2, Box(64, 32, 16, 1), SOLID))
+    assert [e.shape.col for e in grid.entries_in(0, 0, 160, 160)] == [2, 4]
+
+
+def test_a_fall_onto_a_one_way_top_with_a_solid_below_it_names_the_one_way_top() -> None:
+    grid = grid_of((2, 5, Box(32, 80, 16, 16), ONE_WAY), (2, 6, Box(32, 96, 16, 16), SOLID))
+    move = move_y(grid, Box(34, 60, 12, 14), 40.0)
+    assert move.hit is not None and move.hit.face == 80
+    assert move.hit.shape is not None and move.hit.shape.kind is ONE_WAY
+
+
+class SolidEverywhere:
+    """A source whose every query is answered by a solid a little larger than the region."""
+
+    width_px, height_px = 160, 160
+
+    def entries_in(self, left: float, top: float, right: float, bottom: float,
+                   ) -> list[Entry]:
+        return [Entry.of(TileShape(Box(left - 1, top - 1, right - left + 2, bottom - top + 2),
+                                   SOLID))]
+
+
+def test_where_no_place_is_free_the_search_ends_standing_the_box_on_the_map() -> None:
+    assert nearest_free_place(SolidEverywhere(), Box(30, 40, 12, 14)) == Box(30, -14, 12, 14)
