@@ -604,7 +604,8 @@ def test_a_corner_slide_keeps_the_wall_the_run_hit_and_sweeps_both_steps() -> No
     """Running right into a wall while rising into a ceiling's corner: the slide goes left,
     and the x move still says it hit the wall (so the run stops) and sweeps the run and the
     slide."""
-    grid = grid_of((3, 2, Box(60, 32, 16, 16), SOLID), (4, 3, Box(64, 48, 16, 16), SOLID))
+    grid = grid_of((3, 2, Box(60, 32, 4, 16), SOLID), (4, 2, Box(64, 32, 12, 16), SOLID),
+                   (4, 3, Box(64, 48, 16, 16), SOLID))
     moves = move_body(grid, Box(50, 50, 12, 14), 5.0, -10.0, corner_px=4.0)
     assert moves.x.box.x == 48 and moves.y.box.y == 40 and moves.y.hit is None
     assert moves.x.hit is not None and moves.x.hit.side is Side.RIGHT and moves.x.hit.face == 64
@@ -706,3 +707,19 @@ class SolidEverywhere:
 
 def test_where_no_place_is_free_the_search_ends_standing_the_box_on_the_map() -> None:
     assert nearest_free_place(SolidEverywhere(), Box(30, 40, 12, 14)) == Box(30, -14, 12, 14)
+
+
+def test_a_move_sweeps_what_it_is_given_or_else_its_start_and_step() -> None:
+    start = Box(10, 20, 12, 14)
+    assert Move(start, None, start).swept == start                   # a step of nothing
+    assert Move(start, None, start, 3.0, -4.0).swept == Box(10, 16, 15, 18)
+    given = Box(0, 0, 50, 50)
+    assert Move(start.moved(3, 0), None, start, swept=given).swept == given
+
+
+def test_the_path_of_a_move_left_or_up_runs_from_where_it_ended_to_where_it_started() -> None:
+    start = Box(40, 40, 12, 14)
+    left = move_x(TileGrid(10, 10, T, T), start, -15.0)
+    up = move_y(TileGrid(10, 10, T, T), start, -15.0)
+    assert left.path_edges == (25, 40, 52, 54) and left.path == Box(25, 40, 27, 14)
+    assert up.path_edges == (40, 25, 52, 54)
