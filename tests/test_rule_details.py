@@ -615,7 +615,7 @@ def test_a_corner_slide_keeps_the_wall_the_run_hit_and_sweeps_both_steps() -> No
 def test_a_fall_onto_a_floor_s_edge_is_no_corner_slide() -> None:
     """A fall clipping a floor's corner by 3 px is not slid past it, not even onto a
     higher ledge beside it (which a slide would make the fall end sooner on)."""
-    grid = grid_of((3, 5, Box(48, 80, 16, 16), SOLID), (4, 4, Box(64, 76, 16, 4), SOLID))
+    grid = grid_of((3, 5, Box(48, 80, 16, 16), SOLID), (4, 4, Box(74, 76, 6, 4), SOLID))
     assert slide_past_ceiling_corner(grid, Box(61, 60, 12, 14), 10.0, 4.0) is None
 
 
