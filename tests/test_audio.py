@@ -16,11 +16,23 @@ from pathlib import Path
 import pygame
 import pytest
 
-from game.app.audio import EFFECT_NAMES, MUSIC_FILE, SOUND_FOR_EVENT, SOUNDS, Audio
+from game.app.audio import (
+    EFFECT_NAMES,
+    MUSIC_TRACKS,
+    SOUND_FOR_EVENT,
+    SOUNDS,
+    TITLE_TRACK,
+    Audio,
+    music_file,
+)
+from game.app.places import PLACES
 from game.sim.world import EventKind
 from game.tools import synth
 
 QUIET = 0.002 * synth.FULL_SCALE  # a sample this small is inaudible: about -54 dBFS
+JINGLES = ("checkpoint", "clear", "game-over", "win")
+EFFECTS = tuple(name for name in EFFECT_NAMES if name not in JINGLES)
+MUSIC_FILES = tuple(music_file(track) for track in MUSIC_TRACKS)
 
 
 @pytest.fixture(scope="module")
@@ -46,11 +58,14 @@ class Wav:
 
 
 def decode(data: bytes) -> tuple[Wav, array[int]]:
+    """The file's format and its samples, 16-bit signed (an 8-bit file's scaled up)."""
     with wave.open(io.BytesIO(data)) as reader:
         params = Wav(reader.getnchannels(), reader.getsampwidth(), reader.getframerate(),
                      reader.getcomptype(), reader.getnframes())
-        samples = array("h", reader.readframes(params.frames))
-    return params, samples
+        frames = reader.readframes(params.frames)
+    if params.sample_bytes == 1:
+        return params, array("h", ((byte - 128) * 256 for byte in frames))
+    return params, array("h", frames)
 
 
 def zero_crossings(samples: array[int] | list[int]) -> int:
@@ -68,11 +83,17 @@ def test_shipped_sounds_match_the_generator(sounds: dict[str, bytes]) -> None:
 
 
 def test_every_sound_the_game_plays_is_made(sounds: dict[str, bytes]) -> None:
-    assert set(sounds) == {f"{name}.wav" for name in EFFECT_NAMES} | {MUSIC_FILE}
+    assert set(sounds) == {f"{name}.wav" for name in EFFECT_NAMES} | set(MUSIC_FILES)
 
 
-@pytest.mark.parametrize("name", [*(f"{n}.wav" for n in EFFECT_NAMES), MUSIC_FILE])
-def test_every_sound_is_16_bit_mono_at_22050_hz(sounds: dict[str, bytes], name: str) -> None:
+def test_the_title_and_every_place_have_music_of_their_own(sounds: dict[str, bytes]) -> None:
+    assert (TITLE_TRACK, *PLACES) == MUSIC_TRACKS
+    assert tuple(synth.SONGS) == MUSIC_TRACKS
+    assert len({sounds[name] for name in MUSIC_FILES}) == len(MUSIC_FILES)
+
+
+@pytest.mark.parametrize("name", [f"{n}.wav" for n in EFFECT_NAMES])
+def test_every_effect_is_16_bit_mono_at_22050_hz(sounds: dict[str, bytes], name: str) -> None:
     params, samples = decode(sounds[name])
     assert (params.channels, params.sample_bytes, params.rate_hz) == (1, 2, 22050)
     assert params.compression == "NONE"
@@ -80,20 +101,37 @@ def test_every_sound_is_16_bit_mono_at_22050_hz(sounds: dict[str, bytes], name: 
     assert len(sounds[name]) == 44 + 2 * params.frames  # a plain 44-byte RIFF header
 
 
-@pytest.mark.parametrize("name", EFFECT_NAMES)
+@pytest.mark.parametrize("name", MUSIC_FILES)
+def test_music_is_8_bit_mono_at_11025_hz(sounds: dict[str, bytes], name: str) -> None:
+    params, _ = decode(sounds[name])
+    assert (params.channels, params.sample_bytes, params.rate_hz) == (1, 1, 11025)
+    assert params.compression == "NONE"
+    assert len(sounds[name]) == 44 + params.frames  # a plain 44-byte RIFF header
+
+
+@pytest.mark.parametrize("name", EFFECTS)
 def test_effects_are_short(sounds: dict[str, bytes], name: str) -> None:
     params, _ = decode(sounds[f"{name}.wav"])
     assert 0.02 <= params.frames / params.rate_hz <= 0.8
 
 
-def test_music_lasts_a_whole_number_of_steps_between_8_and_16_s(
-        sounds: dict[str, bytes]) -> None:
-    params, _ = decode(sounds[MUSIC_FILE])
-    assert params.frames == synth.LOOP_STEPS * synth.STEP_SAMPLES
-    assert 8.0 <= params.frames / params.rate_hz <= 16.0
+@pytest.mark.parametrize("name", JINGLES)
+def test_jingles_are_made_and_last_at_most_4_s(sounds: dict[str, bytes], name: str) -> None:
+    params, _ = decode(sounds[f"{name}.wav"])
+    assert 0.3 <= params.frames / params.rate_hz <= 4.0
 
 
-@pytest.mark.parametrize("name", [*(f"{n}.wav" for n in EFFECT_NAMES), MUSIC_FILE])
+@pytest.mark.parametrize("track", MUSIC_TRACKS)
+def test_each_loop_lasts_a_whole_number_of_bars_of_at_least_30_s(
+        sounds: dict[str, bytes], track: str) -> None:
+    params, _ = decode(sounds[music_file(track)])
+    tune = synth.SONGS[track]
+    bars = len(synth.song_bars(tune))
+    assert params.frames == bars * synth.STEPS_PER_BAR * synth.step_samples(tune)
+    assert 30.0 <= params.frames / params.rate_hz <= 40.0
+
+
+@pytest.mark.parametrize("name", [*(f"{n}.wav" for n in EFFECT_NAMES), *MUSIC_FILES])
 def test_no_sound_clips_or_clicks_at_its_ends(sounds: dict[str, bytes], name: str) -> None:
     _, samples = decode(sounds[name])
     assert max(abs(s) for s in samples) < synth.FULL_SCALE
@@ -101,8 +139,9 @@ def test_no_sound_clips_or_clicks_at_its_ends(sounds: dict[str, bytes], name: st
     assert abs(samples[-1]) <= QUIET
 
 
-def test_music_loop_joins_without_a_jump(sounds: dict[str, bytes]) -> None:
-    _, samples = decode(sounds[MUSIC_FILE])
+@pytest.mark.parametrize("name", MUSIC_FILES)
+def test_music_loop_joins_without_a_jump(sounds: dict[str, bytes], name: str) -> None:
+    _, samples = decode(sounds[name])
     wrap = abs(samples[0] - samples[-1])
     assert wrap <= QUIET
     steps = sorted(abs(b - a) for a, b in itertools.pairwise(samples))
@@ -110,7 +149,8 @@ def test_music_loop_joins_without_a_jump(sounds: dict[str, bytes]) -> None:
 
 
 def test_all_sounds_fit_in_a_small_download(sounds: dict[str, bytes]) -> None:
-    assert sum(len(data) for data in sounds.values()) < 1_500_000
+    """Seven loops of 30 s or more at 11 kB a second, and the effects and jingles."""
+    assert sum(len(data) for data in sounds.values()) < 3_000_000
 
 
 def test_jump_rises_and_hurt_falls(sounds: dict[str, bytes]) -> None:
@@ -132,7 +172,23 @@ def test_a_sweep_keeps_its_wave_continuous() -> None:
 
 def test_a_score_that_does_not_fill_the_loop_is_refused() -> None:
     with pytest.raises(ValueError, match="expected 64"):
-        synth.parse_score("C4 - - -")
+        synth.parse_score("C4 - - -", 64)
+
+
+def test_one_voice_plays_one_note_at_a_time() -> None:
+    with pytest.raises(ValueError, match="one voice plays one note at a time"):
+        synth.lay(10, [(0, [0.5] * 4), (3, [0.5])])
+
+
+def test_a_steady_note_is_the_sweep_of_one_pitch_to_the_last_bit() -> None:
+    """The quick path for a steady note adds the same numbers in the same order."""
+    for wave_kind in (synth.Wave.SQUARE, synth.Wave.TRIANGLE):
+        instrument = synth.Instrument(wave_kind, duty=0.25)
+        steady = synth.Tone(instrument, 440.0, 440.0, 0.05)
+        almost = synth.Tone(instrument, 440.0, 440.0 + 1e-12, 0.05)
+        a = synth.render(steady, random.Random(0))
+        b = synth.render(almost, random.Random(0))
+        assert len(a) == len(b) and max(abs(x - y) for x, y in zip(a, b, strict=True)) < 1e-6
 
 
 def test_main_writes_every_sound_readable_by_everyone(tmp_path: Path,
@@ -215,9 +271,9 @@ def test_audio_turned_off_never_opens_the_mixer(monkeypatch: pytest.MonkeyPatch)
 
     monkeypatch.setattr(pygame.mixer, "init", must_not_open)
     audio = Audio(enabled=False)
-    audio.play("exit")
-    audio.start_music()
-    assert audio.silent
+    audio.play("clear")
+    audio.start_music("caves")
+    assert audio.silent and audio.track is None
 
 
 def test_a_missing_file_silences_only_that_sound(tmp_path: Path,
@@ -227,7 +283,7 @@ def test_a_missing_file_silences_only_that_sound(tmp_path: Path,
     audio = Audio(tmp_path)
     try:
         assert not audio.silent
-        assert "jump.wav" in audio.status and "music.wav" in audio.status
+        assert "jump.wav" in audio.status and "music-title.wav" in audio.status
         assert "coin.wav" not in audio.status
         assert "python -m game.tools.synth" in audio.status
         audio.play("jump")
@@ -257,6 +313,30 @@ def test_set_volume_clamps_to_0_to_1_and_reaches_the_mixer() -> None:
         audio.close()
 
 
-def test_world_events_play_the_sound_of_the_same_name() -> None:
+def test_world_events_play_the_sound_of_the_same_name_and_the_exit_the_clear() -> None:
     assert set(SOUND_FOR_EVENT.values()) <= set(EFFECT_NAMES)
-    assert all(SOUND_FOR_EVENT[kind] == kind.value for kind in SOUND_FOR_EVENT)
+    assert SOUND_FOR_EVENT[EventKind.EXIT] == "clear"
+    assert all(SOUND_FOR_EVENT[kind] == kind.value for kind in SOUND_FOR_EVENT
+               if kind is not EventKind.EXIT)
+
+
+def test_touching_a_checkpoint_makes_a_sound() -> None:
+    assert SOUND_FOR_EVENT[EventKind.CHECKPOINT] == "checkpoint"
+
+
+def test_asking_for_another_track_swaps_the_music_and_the_same_one_carries_on() -> None:
+    audio = Audio()
+    try:
+        audio.start_music(TITLE_TRACK)
+        assert audio.track == TITLE_TRACK and pygame.mixer.music.get_busy()
+        audio.start_music("caves")
+        assert audio.track == "caves" and pygame.mixer.music.get_busy()
+        audio.pause_music()
+        audio.start_music("caves")  # paused: resumes the same track
+        assert audio.track == "caves" and pygame.mixer.music.get_busy()
+        audio.stop_music()
+        assert audio.track is None
+        with pytest.raises(ValueError, match="no music is called 'cave'"):
+            audio.start_music("cave")
+    finally:
+        audio.close()

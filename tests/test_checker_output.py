@@ -19,8 +19,8 @@ from typing import IO
 import pygame
 import pytest
 
+from game.checker.cli import main as levels_main
 from game.levels import load_level
-from game.levels.__main__ import main as levels_main
 from game.levels.errors import WARNINGS_SHOWN_PER_KIND, clipped, escaped
 from game.sim.inputs import InputScript
 from tests.in_process import Ran, call_main

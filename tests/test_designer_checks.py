@@ -14,12 +14,12 @@ from pathlib import Path
 import pygame
 import pytest
 
+from game.checker.checking import Finding, Options, check_map
+from game.checker.solver import Effort, solve
+from game.checker.verdict import Kind
 from game.collision.shapes import TileKind
 from game.levels import LEVELS_DIR, load_level
-from game.levels.checking import Finding, Options, check_map
-from game.levels.solver import Effort, solve
 from game.levels.tiledata import FLIPPED_D, FLIPPED_V
-from game.levels.verdict import Kind
 from tests.maps import write_tmx
 
 OPEN = ["                ",

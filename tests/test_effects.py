@@ -2,19 +2,30 @@
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 import pygame
 import pytest
 
 from game.app.assets import load_assets
-from game.app.effects import SHAKE_S, SQUASH, STRETCH, Effects
+from game.app.effects import (
+    LANTERN_GLASS_ABOVE_FOOT_PX,
+    RESPAWN_BEAT_S,
+    SHAKE_S,
+    SQUASH,
+    STRETCH,
+    Effects,
+)
 from game.app.render import WorldRenderer
 from game.app.run import input_script
+from game.collision.aabb import Box
 from game.levels import FIRST_LEVEL, load_level
 from game.sim.campaign import Campaign
+from game.sim.inputs import Action
 from game.sim.tuning import TICK_S
 from game.sim.world import EventKind
+from tests.maps import level_from_ascii
 
 SCRIPT = Path(__file__).resolve().parent / "scripts" / f"{FIRST_LEVEL.stem}.txt"
 TICKS = 700  # far into the first level: jumps, landings, coins and both stomps
@@ -123,3 +134,37 @@ def test_the_shake_swings_the_world_under_a_still_sky_and_smears_nothing(
     world.camera.x, world.camera.y = 200.0 - dx, 40.0 - dy
     WorldRenderer(assets).draw(screen, world, 0)
     assert shaken == pygame.image.tobytes(screen, "RGB")
+
+
+def test_a_lit_lantern_glows_and_a_respawn_gathers_light_on_the_hero_changing_nothing() -> None:
+    """Walk right through a checkpoint's lantern into spikes: the lantern glows as it lights,
+    and the ring that answers the hurt closes in on where the hero comes back."""
+    rows = ["              ", " P   ^^^^^^^^ ", "##############"]
+    level = dataclasses.replace(level_from_ascii(rows), checkpoints=(Box(48, 0, 16, 32),))
+    plain, juicy = Campaign(level.path, loader=lambda _: level), Campaign(
+        level.path, loader=lambda _: level)
+    effects = Effects()
+    glows = beats = 0
+    for _ in range(120):
+        plain_events = plain.tick(frozenset({Action.RIGHT}))
+        world = juicy.world
+        events = juicy.tick(frozenset({Action.RIGHT}))
+        assert events == plain_events and world.player.box == plain.world.player.box
+        effects.observe(world, events)
+        kinds = {event.kind for event in events}
+        if EventKind.CHECKPOINT in kinds:
+            ring = effects.rings[-1]
+            assert ring.radius_px[0] < ring.radius_px[1]  # grows out of the lantern
+            assert ring.x == 56 and ring.y == 32 - LANTERN_GLASS_ABOVE_FOOT_PX
+            glows += 1
+        if EventKind.HURT in kinds:
+            ring = effects.rings[-1]
+            box = world.player.box  # back at the lantern
+            assert ring.radius_px[0] > ring.radius_px[1]  # closes in on the hero
+            assert (ring.x, ring.y) == (box.x + box.w / 2, box.y + box.h / 2)
+            assert ring.life_s == RESPAWN_BEAT_S
+            beats += 1
+        effects.advance(TICK_S)
+    assert glows == 1 and beats >= 1
+    effects.advance(RESPAWN_BEAT_S)
+    assert not effects.rings

@@ -1,4 +1,4 @@
-"""Enemies left out of a move (game.levels.enemy_timeline): a move the solver makes without
+"""Enemies left out of a move (game.checker.enemy_timeline): a move the solver makes without
 the enemies far from the player ends exactly as the same move made with every enemy, and a
 player that comes close to one after all, or loses a life, has the move made again in full."""
 
@@ -10,10 +10,11 @@ from typing import Any
 
 import pytest
 
+from game.checker import enemy_timeline
+from game.checker.enemy_timeline import CLOSE_PX, EnemyTimeline
+from game.checker.solver import CHOICES, MOVE_TICKS, Effort, _Search
 from game.collision.aabb import Box
-from game.levels import LEVELS_DIR, enemy_timeline, load_level
-from game.levels.enemy_timeline import CLOSE_PX, EnemyTimeline
-from game.levels.solver import CHOICES, MOVE_TICKS, Effort, _Search
+from game.levels import LEVELS_DIR, load_level
 from game.sim.inputs import Actions
 from game.sim.level import EnemySpec, Level
 from game.sim.snapshot import Snapshot, state_of

@@ -25,9 +25,9 @@ import pytest
 from game.app import cli
 from game.app.run import input_script
 from game.app.watch import FileWatcher, level_files
+from game.checker.cli import main as levels_main
 from game.collision.tile_grid import TileGrid, TileShape
 from game.levels import LevelError, budget, check_level, errors, layers, load_level
-from game.levels.__main__ import main as levels_main
 from game.levels.images import header_size
 from tests.hang_guard import HANG_S
 from tests.in_process import Ran, call_main

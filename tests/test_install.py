@@ -88,6 +88,11 @@ def test_a_wheel_installed_in_a_fresh_environment_plays_level_one_from_any_folde
     assert "site-packages" in report["level"] or "Lib" in report["level"]
     assert (elsewhere / "shot.png").stat().st_size > 0  # the art came from the package
 
+    run([bin_dir / "tile-hopper", "--headless", "--level", "over-the-gaps", "--ticks", "1",
+         "--report", "named.json"], elsewhere, env)  # a shipped level, by its name
+    named = json.loads((elsewhere / "named.json").read_text(encoding="utf-8"))["level"]
+    assert named.endswith("game/data/levels/02-over-the-gaps.tmx")
+
     checked = run([bin_dir / "tile-hopper-levels", "check", "--no-solve",
                    Path(report["level"]).parent], elsewhere, env)  # tests/test_solver.py solves
     assert "all playable" in checked.stdout

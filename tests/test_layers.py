@@ -6,8 +6,13 @@ The layers, lowest first (each may import only those before it):
 1. ``game.collision``: the collision reference, pure geometry a reader can copy.
 2. ``game.sim``: the headless simulation that uses it.
 3. ``game.levels``: the Tiled loader, which builds a simulation's level.
-4. ``game.app``: the window, screens, rendering, files and the command line.
+4. ``game.checker`` and ``game.app``, side by side (neither imports the other): the level
+   checker, which judges what the loader built, and the window, screens, rendering, files
+   and the command line.
 5. ``game.demos``, ``game.tools``, ``game.bench``, ``game.lab``: programs beside the game.
+
+A package's ``__main__`` only starts a program, so it sits on top, like ``game.__main__``
+(``python -m game.levels`` starts the checker's command line).
 
 Every ``import`` counts, including those inside functions: a lazy import is still a
 dependency, it only hides it.
@@ -22,7 +27,7 @@ import pytest
 
 GAME = Path(__file__).resolve().parent.parent / "game"
 
-LAYER = {"collision": 1, "sim": 2, "levels": 3, "app": 4,
+LAYER = {"collision": 1, "sim": 2, "levels": 3, "checker": 4, "app": 4,
          "demos": 5, "tools": 5, "bench": 5, "lab": 5}
 
 
@@ -64,12 +69,15 @@ GRAPH = {name: {m for m in imports_of(path) if m in MODULES} for name, path in M
 
 def layer_of(module: str) -> int | None:
     parts = module.split(".")
+    if parts[-1] == "__main__":
+        return None  # a program's start, on top of every layer
     return LAYER.get(parts[1]) if len(parts) > 1 else None
 
 
 def test_every_module_of_the_game_sits_in_a_layer() -> None:
-    top_level = {"game", "game.__main__"}
-    loose = [m for m in MODULES if m not in top_level and layer_of(m) is None]
+    top_level = {"game"}
+    loose = [m for m in MODULES if m not in top_level and layer_of(m) is None
+             and not m.endswith(".__main__")]
     assert loose == [], f"modules outside the layered packages: {loose}"
 
 
@@ -77,7 +85,7 @@ def test_every_module_of_the_game_sits_in_a_layer() -> None:
 def test_no_module_imports_a_higher_layer(module: str) -> None:
     mine = layer_of(module)
     if mine is None:
-        return  # game/__init__.py and game/__main__.py sit on top
+        return  # game/__init__.py and every __main__.py sit on top
     upward = sorted(m for m in GRAPH[module] if (layer_of(m) or 99) > mine)
     assert upward == [], f"{module} (layer {mine}) imports a higher layer: {upward}"
 
@@ -86,6 +94,22 @@ def test_the_collision_reference_imports_nothing_else_of_the_game() -> None:
     outside = {m: sorted(d for d in deps if layer_of(d) != 1)
                for m, deps in GRAPH.items() if layer_of(m) == 1}
     assert {m: d for m, d in outside.items() if d} == {}
+
+
+def test_the_checker_and_the_app_do_not_import_each_other() -> None:
+    crossing = {m: sorted(d for d in deps if layer_of(d) == 4
+                          and d.split(".")[1] != m.split(".")[1])
+                for m, deps in GRAPH.items() if layer_of(m) == 4}
+    assert {m: d for m, d in crossing.items() if d} == {}
+
+
+def test_the_loader_knows_nothing_of_the_checker() -> None:
+    """The loader reads maps into levels; judging them is the checker's: a loader reader
+    never has to open the checker (only ``python -m game.levels`` starts it)."""
+    assert {m: sorted(d for d in deps if d.startswith("game.checker"))
+            for m, deps in GRAPH.items()
+            if m.startswith("game.levels.") and m != "game.levels.__main__"
+            and any(d.startswith("game.checker") for d in deps)} == {}
 
 
 def test_demos_tools_and_bench_do_not_import_each_other() -> None:

@@ -9,12 +9,12 @@ from pathlib import Path
 import pytest
 
 from game.app.run import input_script
+from game.checker.cli import main as levels_main
+from game.checker.reach import DEFAULT_LIMITS, measure_limits, measure_reach
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
-from game.levels.__main__ import main as levels_main
 from game.levels.loader import check_level
-from game.levels.reach import DEFAULT_LIMITS, measure_limits, measure_reach
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action
 from game.sim.tuning import Tuning

@@ -15,10 +15,10 @@ from pathlib import Path
 import pytest
 
 from game.app import cli
+from game.checker.cli import main as levels_main
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind
 from game.levels import LEVELS_DIR, LevelError, check_level, load_level
-from game.levels.__main__ import main as levels_main
 from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.tuning import Tuning

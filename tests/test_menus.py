@@ -12,11 +12,13 @@ import pytest
 from game.app.gamepad import BUTTON_A, BUTTON_B, BUTTON_START, STICK_Y_AXIS, StickEdges, pad_nav
 from game.app.menus import (
     LEVEL_SELECT,
+    OPTIONS,
     PAUSE_ITEMS,
     PLAY,
     QUIT,
     QUIT_TO_TITLE,
     RESTART,
+    RETRY,
     TITLE_ITEMS,
     HeldOver,
     LevelEntry,
@@ -24,6 +26,7 @@ from game.app.menus import (
     Menus,
     QuitGame,
     RestartLevel,
+    RetryLevel,
     Screen,
     StartLevel,
     campaign_levels,
@@ -99,16 +102,17 @@ def test_the_title_menu_moves_with_arrows_and_w_s_and_wraps_round() -> None:
     drive = Driver(entries())
     assert drive.menus.screen is Screen.TITLE and drive.lit_title == PLAY
     assert drive.send(key(pygame.K_DOWN)).lit_title == LEVEL_SELECT
+    assert drive.send(key(pygame.K_s)).lit_title == OPTIONS
     assert drive.send(key(pygame.K_s)).lit_title == QUIT
     assert drive.send(key(pygame.K_DOWN)).lit_title == PLAY
     assert drive.send(key(pygame.K_w)).lit_title == QUIT
-    assert drive.send(key(pygame.K_UP)).lit_title == LEVEL_SELECT
+    assert drive.send(key(pygame.K_UP)).lit_title == OPTIONS
 
 
 def test_the_title_menu_moves_with_the_dpad_and_one_stick_flick_is_one_step() -> None:
     drive = Driver(entries())
     assert drive.send(hat(0, -1), hat(0, 0)).lit_title == LEVEL_SELECT
-    assert drive.send(stick(0.3), stick(0.8), stick(1.0), stick(0.9)).lit_title == QUIT
+    assert drive.send(stick(0.3), stick(0.8), stick(1.0), stick(0.9)).lit_title == OPTIONS
     assert drive.send(stick(0.0), stick(-0.9)).lit_title == LEVEL_SELECT
     assert drive.send(hat(0, 1)).lit_title == PLAY
 
@@ -248,11 +252,30 @@ def test_the_pause_menu_opens_on_resume_every_time() -> None:
     assert drive.lit_pause == PAUSE_ITEMS[0]
 
 
-def test_the_end_of_a_run_waits_for_enter_or_a_then_shows_the_title() -> None:
+def test_game_over_waits_for_enter_or_a_and_quit_to_title_shows_the_title() -> None:
     for confirm in (key(pygame.K_RETURN), button(BUTTON_A)):
         drive = Driver(entries(), ended(Menus(Screen.PLAYING)))
         assert drive.menus.screen is Screen.ENDED
         assert drive.send(key(pygame.K_DOWN), confirm).menus.screen is Screen.TITLE
+        assert drive.commands == []
+
+
+def test_game_over_opens_on_retry_this_level_which_plays_the_level_again() -> None:
+    for confirm in (key(pygame.K_RETURN), button(BUTTON_A)):
+        drive = Driver(entries(), ended(Menus(Screen.PLAYING)))
+        assert RETRY == "Retry this level"
+        assert drive.send(confirm).menus.screen is Screen.PLAYING
+        assert drive.commands == [RetryLevel()]
+
+
+def test_the_win_rolls_the_credits_then_enter_or_a_shows_the_title() -> None:
+    for confirm in (key(pygame.K_RETURN), button(BUTTON_A)):
+        drive = Driver(entries(), ended(Menus(Screen.PLAYING), won=True))
+        assert drive.send(key(pygame.K_DOWN)).menus.screen is Screen.ENDED
+        assert drive.send(confirm).menus.screen is Screen.CREDITS
+        assert drive.send(key(pygame.K_DOWN)).menus.screen is Screen.CREDITS
+        assert drive.send(confirm).menus.screen is Screen.TITLE
+        assert drive.menus.title_item == TITLE_ITEMS.index(PLAY) and drive.commands == []
 
 
 def test_enter_after_a_game_over_reached_from_the_level_select_plays_on() -> None:
@@ -262,7 +285,8 @@ def test_enter_after_a_game_over_reached_from_the_level_select_plays_on() -> Non
     drive.send(key(pygame.K_DOWN), key(pygame.K_RETURN), key(pygame.K_RETURN))  # select, play
     assert drive.menus.screen is Screen.PLAYING
     drive.menus = ended(drive.menus)                          # the last life is lost
-    drive.send(key(pygame.K_RETURN), key(pygame.K_RETURN))     # to the title, then Enter
+    drive.send(key(pygame.K_DOWN), key(pygame.K_RETURN))       # Quit to title
+    drive.send(key(pygame.K_RETURN))                           # then Enter
     assert drive.menus.screen is Screen.PLAYING
     assert drive.commands == [StartLevel(TWO), StartLevel(TWO)]
 
@@ -285,7 +309,7 @@ def test_a_whole_session_title_to_level_to_pause_to_title_to_quit() -> None:
     down_to_quit = (hat(0, -1),) * PAUSE_ITEMS.index(QUIT_TO_TITLE)
     quit_to_title = (button(BUTTON_START), *down_to_quit, button(BUTTON_A))
     assert drive.send(*quit_to_title).menus.screen is Screen.TITLE
-    drive.send(key(pygame.K_DOWN), key(pygame.K_RETURN))        # Quit
+    drive.send(key(pygame.K_DOWN), key(pygame.K_DOWN), key(pygame.K_RETURN))  # Quit
     assert drive.commands == [StartLevel(TWO), QuitGame()]
 
 

@@ -30,9 +30,9 @@ from game.app.hud import ELLIPSIS, fit_text
 from game.app.saves import JsonFile, Progress
 from game.app.settings import Settings
 from game.bench import main as bench_main
+from game.checker.cli import main as levels_main
 from game.demos import stress
 from game.levels import FIRST_LEVEL, LevelError, check_level, load_level, reading
-from game.levels.__main__ import main as levels_main
 from game.levels.closed_output import quiet_when_output_closes
 from game.sim.campaign import Campaign
 from game.sim.inputs import Action

@@ -18,8 +18,8 @@ from pathlib import Path
 import pytest
 
 from game.app import cli, files
+from game.checker.cli import main as levels_main
 from game.levels import outputs, reading
-from game.levels.__main__ import main as levels_main
 from tests.in_process import call_main
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -14,8 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from game.levels.__main__ import main as levels_main
-from game.levels.__main__ import reach_summary
+from game.checker.cli import main as levels_main
+from game.checker.cli import reach_summary
 from game.levels.classes import LEVEL
 from game.levels.loader import check_level, load_level
 from game.sim.tuning import Tuning
@@ -101,7 +101,7 @@ CORNERS = list(itertools.product(*(bounds(name) for name in PHYSICS)))
 def test_at_every_corner_of_the_ranges_the_reach_is_measured_within_its_budget(
         corner: tuple[float, float, float, float]) -> None:
     """No IndexError off the test level, and the limits stop at their budget of ticks."""
-    from game.levels import reach
+    from game.checker import reach
 
     tuning = Tuning().with_map_properties(dict(zip(PHYSICS, corner, strict=True)))
     counted: list[int] = []
@@ -123,7 +123,7 @@ def test_at_every_corner_of_the_ranges_the_reach_is_measured_within_its_budget(
 def test_the_widest_jump_at_the_ranges_ends_lands_on_its_test_level() -> None:
     """The longest jump the ranges allow (30 s in the air at 10,000 px/s) lands on the
     floor jump_path lays for it, however far that is."""
-    from game.levels.reach import jump_path
+    from game.checker.reach import jump_path
 
     tuning = Tuning(gravity_px_s2=200.0, jump_speed_px_s=1_000.0, max_fall_speed_px_s=100.0,
                     run_speed_px_s=10_000.0)
@@ -135,7 +135,7 @@ def test_six_hundred_maps_each_with_its_own_gravity_are_measured_for_four(
         monkeypatch: pytest.MonkeyPatch) -> None:
     """The summary gives the reach on the first maps with their own physics and counts the
     rest: measuring each took a second, and 600 took ten minutes."""
-    from game.levels import reach
+    from game.checker import reach
 
     measured: list[Tuning] = []
 
@@ -155,7 +155,7 @@ def test_six_hundred_maps_each_with_its_own_gravity_are_measured_for_four(
 
 def test_the_summary_spends_one_budget_of_ticks_on_every_map_together(
         monkeypatch: pytest.MonkeyPatch) -> None:
-    from game.levels import reach
+    from game.checker import reach
 
     own = [(Path(f"m{number}.tmx"), Tuning(gravity_px_s2=600.0 + number))
            for number in range(3)]
@@ -191,7 +191,7 @@ def floors(cols: int, rows: int) -> list[str]:
 def test_the_jump_fill_of_a_big_map_stops_at_its_budget_of_steps() -> None:
     """A 500x500 map of floors took the fill 66 s; its steps are now counted, and past the
     budget it gives up (proving nothing) instead of taking minutes."""
-    from game.levels.reachable import FillWork, reachable
+    from game.checker.reachable import FillWork, reachable
 
     level = level_from_ascii(floors(50, 30))
     work = FillWork(budget=5_000)
@@ -206,7 +206,7 @@ def test_the_biggest_shipped_level_fills_within_a_thirtieth_of_the_budget() -> N
     """The fill a check runs on a shipped level (the narrow one: it reaches the Exit, so the
     full proof is not needed) within a thirtieth; the full proof, with every platform's push
     and every enemy's way, within a fifth."""
-    from game.levels.reachable import MAX_FILL_STEPS, FillWork, reachable
+    from game.checker.reachable import MAX_FILL_STEPS, FillWork, reachable
 
     for path in [ROOT / "levels/06-the-summit.tmx"]:
         work = FillWork()
@@ -220,9 +220,9 @@ def test_the_biggest_shipped_level_fills_within_a_thirtieth_of_the_budget() -> N
 
 def test_a_map_whose_fill_gives_up_is_still_searched_and_solved(
         monkeypatch: pytest.MonkeyPatch) -> None:
-    from game.levels import reachable as fill
-    from game.levels.solver import Effort
-    from game.levels.verdict import Kind, judge
+    from game.checker import reachable as fill
+    from game.checker.solver import Effort
+    from game.checker.verdict import Kind, judge
 
     monkeypatch.setattr(fill, "MAX_FILL_STEPS", 100)
     tried: list[int] = []
@@ -236,8 +236,8 @@ def test_a_map_whose_fill_gives_up_is_still_searched_and_solved(
     def again(world: World) -> None:
         tried.append(2)
 
-    monkeypatch.setattr("game.levels.verdict.reachable", counted)
-    monkeypatch.setattr("game.levels.solver.steps_to_exit", again)
+    monkeypatch.setattr("game.checker.verdict.reachable", counted)
+    monkeypatch.setattr("game.checker.solver.steps_to_exit", again)
     verdict = judge(level_from_ascii(["          ", "  P    D  ", "##########"]), Effort())
     assert verdict.kind is Kind.SOLVED
     assert tried == [1]  # the fill ran once, gave up, and the search did not try it again
@@ -256,7 +256,7 @@ def test_a_move_on_a_crowded_map_counts_as_the_work_it_does() -> None:
     """Within every budget of its level, a map of 100 enemies, 300 platforms or 5,000 coins
     made each move of the search 20 to 140 times dearer: 50,000 moves took minutes. Now such
     a move counts as several, so the budget bounds the work, not only the moves."""
-    from game.levels.solver import BODIES_PER_MOVE, COINS_PER_MOVE, Effort, move_weight, solve
+    from game.checker.solver import BODIES_PER_MOVE, COINS_PER_MOVE, Effort, move_weight, solve
 
     coins = 2 * COINS_PER_MOVE
     art = ["C" * coins + " " * 100, "  P" + " " * (coins + 96) + "D", "#" * (coins + 100)]
@@ -270,7 +270,7 @@ def test_a_move_on_a_crowded_map_counts_as_the_work_it_does() -> None:
 
 
 def test_the_designers_guide_gives_every_bound_on_the_checkers_work() -> None:
-    from game.levels import reach, reachable, solver
+    from game.checker import reach, reachable, solver
 
     guide = " ".join((ROOT / "levels/README.md").read_text(encoding="utf-8").split())
     assert f"after looking at {reachable.MAX_FILL_STEPS:,} cells" in guide

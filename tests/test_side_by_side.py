@@ -14,11 +14,11 @@ from pathlib import Path
 
 import pytest
 
-from game.levels import side_by_side
-from game.levels.__main__ import check
-from game.levels.checking import Options
-from game.levels.side_by_side import check_maps
-from game.levels.solver import Effort
+from game.checker import side_by_side
+from game.checker.checking import Options
+from game.checker.cli import check
+from game.checker.side_by_side import check_maps
+from game.checker.solver import Effort
 from tests.hang_guard import HANG_S
 from tests.maps import write_tmx
 
@@ -96,8 +96,8 @@ def test_no_more_processes_than_cores(tmp_path: Path, monkeypatch: pytest.Monkey
 # lost there), and once the pool's first thread runs (its workers outlived the command).
 _CTRL_C_WHILE_THE_POOL_STARTS = """
 import os, signal, sys, threading
-from game.levels import side_by_side
-from game.levels.__main__ import main
+from game.checker import side_by_side
+from game.checker.cli import main
 
 side_by_side.usable_cores = lambda: 2
 moment = sys.argv[2]

@@ -8,9 +8,8 @@ import itertools
 from collections.abc import Iterator
 from typing import cast
 
-from game.collision.aabb import Box
-from game.levels.reach import DEFAULT_LIMITS
-from game.levels.solver import (
+from game.checker.reach import DEFAULT_LIMITS
+from game.checker.solver import (
     BACK_MOVES,
     COMES_PX,
     LAST_COYOTE_TICK,
@@ -21,6 +20,7 @@ from game.levels.solver import (
     _Search,
     solve,
 )
+from game.collision.aabb import Box
 from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route

@@ -15,8 +15,8 @@ from typing import Any
 import pytest
 import pytmx
 
+from game.checker.cli import main as levels_main
 from game.levels import LEVELS_DIR
-from game.levels.__main__ import main as levels_main
 from game.levels.classes import CLASSES, find
 from game.levels.project import (
     OBJECT_TYPES_FILE,

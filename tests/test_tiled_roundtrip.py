@@ -27,8 +27,8 @@ from pathlib import Path
 import pytest
 
 from game.app.run import input_script
+from game.checker.cli import main as levels_main
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
-from game.levels.__main__ import main as levels_main
 from game.levels.project import OBJECT_TYPES_FILE
 from game.sim.campaign import Campaign, Outcome
 from game.sim.level import Level

@@ -17,12 +17,12 @@ from pathlib import Path
 
 import pytest
 
+from game.checker.cli import EXIT_UNDECIDED, main
+from game.checker.reach import DEFAULT_LIMITS, jump_path
+from game.checker.reachable import jump_rise, open_path, reachable, starts
+from game.checker.solver import Effort, replay, solve
+from game.checker.verdict import Kind, Verdict, judge
 from game.collision.aabb import Box
-from game.levels.__main__ import EXIT_UNDECIDED, main
-from game.levels.reach import DEFAULT_LIMITS, jump_path
-from game.levels.reachable import jump_rise, open_path, reachable, starts
-from game.levels.solver import Effort, replay, solve
-from game.levels.verdict import Kind, Verdict, judge
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, Actions
 from game.sim.level import EnemySpec, Level
@@ -35,7 +35,7 @@ COLS, ROWS, TILE = 40, 14, 16
 WIDTH, FLOOR = COLS * TILE, 10 * TILE  # the floor's top
 EDGE = 12 * TILE  # where a gap or a ledge begins
 SPAWN = Box(32, FLOOR - 14, 12, 14)
-EFFORT = Effort(budget=4_000)  # small: these maps are short, and an undecided is honest
+EFFORT = Effort(budget=6_000)  # small: these maps are short, and an undecided is honest
 
 
 def exit_on(top: float) -> Box:
@@ -601,7 +601,7 @@ def test_a_respawn_a_platform_may_move_without_a_bound_leaves_the_map_not_decide
         monkeypatch: pytest.MonkeyPatch) -> None:
     """Where no bound is found for where the flag may put the player, the proof says so
     instead of calling the map impossible."""
-    monkeypatch.setattr("game.levels.reachable.moved_respawns", lambda *_: None)
+    monkeypatch.setattr("game.checker.reachable.moved_respawns", lambda *_: None)
     verdict = judge(pit_with_a_lift_over_a_flag(), Effort(budget=500))
     assert verdict.kind is Kind.UNDECIDED
     assert "the proof of impossibility does not cover a respawn moved by a moving Platform " \

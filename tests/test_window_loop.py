@@ -13,6 +13,7 @@ import pygame
 import pytest
 
 from game.app import window as window_module
+from game.app.audio import SOUND_FOR_EVENT
 from game.app.banner import SKIP_AFTER_S
 from game.app.cli import parser
 from game.app.menus import Screen
@@ -21,6 +22,7 @@ from game.app.saves import CampaignMaps
 from game.app.window import MENU_FPS, STILL_FPS, GameWindow, play_in_window
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, InputScript
+from game.sim.world import EventKind
 from tests.maps import level_from_ascii
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -221,3 +223,83 @@ def test_the_level_end_banner_holds_the_simulation_and_enter_skips_it_only_after
     assert seen[-1][0] is Screen.ENDED and run.campaign.outcome is Outcome.WON
     progress = json.loads((tmp_path / "tile-hopper" / "progress.json").read_text("utf-8"))
     assert progress != {} and str(cleared_ticks[0]) in json.dumps(progress)
+
+
+class Speakers:
+    """Stands in for the window's Audio: notes what it was asked to play, in order."""
+
+    def __init__(self) -> None:
+        self.heard: list[str] = []
+
+    def play(self, sound: EventKind | str) -> None:
+        name = SOUND_FOR_EVENT.get(sound) if isinstance(sound, EventKind) else sound
+        if name not in (None, "menu", "tally"):
+            self.heard.append(str(name))
+
+    def start_music(self, track: str = "title") -> None:
+        music = [heard for heard in self.heard if heard.startswith("music:")]
+        if not music or music[-1] != f"music:{track}":
+            self.heard.append(f"music:{track}")
+
+    def pause_music(self) -> None:
+        pass
+
+    def stop_music(self) -> None:
+        self.start_music("off")
+
+    def close(self) -> None:
+        pass
+
+
+def ending(rows: list[str], monkeypatch: pytest.MonkeyPatch, tmp_path: Path, held: Action | None,
+           answer: list[tuple[Screen, int]]) -> tuple[GameWindow, list[Screen], Speakers]:
+    """Play ``rows`` holding ``held`` until the run ends; press each key of ``answer`` in
+    turn, in a frame when its screen is up; close the window on the title after the last.
+    The window, the screens seen frame by frame and what its speakers were asked."""
+    monkeypatch.setenv("XDG_DATA_HOME", str(tmp_path))
+    monkeypatch.setattr(window_module, "held_keys",
+                        lambda *_: frozenset({held} if held else set()))
+    monkeypatch.setattr(pygame.time, "Clock", SteadyClock)
+    level = level_from_ascii(rows)
+    run = Run(Campaign(Path("x.tmx"), loader=lambda _: level), None,
+              parser().parse_args(["--level", "x.tmx"]))
+    game = GameWindow(run)
+    speakers = Speakers()
+    game.audio = speakers  # type: ignore[assignment]
+    seen: list[Screen] = []
+
+    def next_batch(*_: object, **__: object) -> list[pygame.event.Event]:
+        screen = game.menus.screen
+        seen.append(screen)
+        assert len(seen) < 1200, "the run never ended"
+        if answer and answer[0][0] is screen:
+            return [key(answer.pop(0)[1])]
+        return [pygame.event.Event(pygame.QUIT)] if screen is Screen.TITLE else []
+
+    monkeypatch.setattr(pygame.event, "get", next_batch)
+    assert game.play() == 0
+    return game, seen, speakers
+
+
+def test_the_win_plays_its_jingle_and_enter_rolls_the_credits_to_the_title_music(
+        display: None, monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    _, seen, speakers = ending([" P D ", "#####"], monkeypatch, tmp_path, Action.RIGHT,
+                                  [(Screen.ENDED, pygame.K_RETURN),
+                                   (Screen.CREDITS, pygame.K_DOWN),
+                                   (Screen.CREDITS, pygame.K_RETURN)])
+    assert [s for n, s in enumerate(seen) if n == 0 or seen[n - 1] is not s] == [
+        Screen.PLAYING, Screen.CLEARED, Screen.ENDED, Screen.CREDITS, Screen.TITLE]
+    assert speakers.heard == ["music:meadow", "clear", "music:off", "win", "music:title"]
+
+
+def test_game_over_plays_its_jingle_and_retry_plays_the_level_again_with_its_music(
+        display: None, monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    game, seen, speakers = ending([" P ", "   ", "   "], monkeypatch, tmp_path, None,
+                                  [(Screen.ENDED, pygame.K_RETURN),
+                                   (Screen.PLAYING, pygame.K_p),
+                                   (Screen.PAUSED, pygame.K_UP),
+                                   (Screen.PAUSED, pygame.K_RETURN)])
+    assert seen.index(Screen.ENDED) < seen.index(Screen.PAUSED)  # played on after the retry
+    assert game.run.campaign.lives == game.run.campaign.tuning.start_lives
+    assert speakers.heard == ["music:meadow", "hurt", "hurt", "hurt", "music:off", "game-over",
+                              "music:meadow", "music:title"]

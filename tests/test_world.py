@@ -144,6 +144,20 @@ def test_falling_out_of_the_map_costs_a_life_and_the_last_life_ends_the_game() -
     assert campaign.deaths == 3 and campaign.lives == 0
 
 
+def test_retrying_after_game_over_plays_the_same_level_again_with_full_lives() -> None:
+    level = level_from_ascii(["P  ", "   ", "   "])
+    campaign = Campaign(Path("x.tmx"), loader=lambda _: level)
+    while campaign.outcome is Outcome.RUNNING:
+        campaign.tick(NOTHING)
+    lost = campaign.world
+    campaign.retry_level()
+    assert campaign.outcome.value == Outcome.RUNNING.value  # (mypy narrowed it above)
+    assert campaign.lives == campaign.tuning.start_lives and campaign.deaths == 3
+    assert campaign.world is not lost and campaign.world.level is level
+    assert campaign.world.player.box == campaign.world.spawn
+    assert campaign.tick(NOTHING) == []  # the run goes on
+
+
 def test_touching_a_hazard_costs_a_life() -> None:
     level = level_from_ascii(["     ", " P ^ ", "#####"])
     campaign = Campaign(Path("x.tmx"), loader=lambda _: level)

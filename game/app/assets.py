@@ -33,6 +33,7 @@ ASSETS = ASSETS_DIR
 
 SPRITE_PX = 16  # player and enemy frames are 16x16
 COIN_PX = 8  # coin frames are 8x8
+CHECKPOINT_SIZE_PX = (16, 32)  # checkpoint frames: a lantern on a post
 MAX_ASSET_BYTES = 16 * 1024 * 1024  # each picture or font of the game's own: a few kB
 
 # The game's own pixel font (game.tools.pixel_font), drawn at 1x: 7 px capitals, 2 px
@@ -49,6 +50,7 @@ class Assets:
     enemy_frames: list[pygame.Surface]  # 0-1 walk, 2 squashed, 3-4 hopper; facing right
     coin_frames: list[pygame.Surface]  # spin: face, narrow, edge, narrow
     exit_image: pygame.Surface  # 16x32 flag, its pole's foot at the bottom centre
+    checkpoint_frames: list[pygame.Surface]  # 16x32 lantern on its post: unlit, then lit
     sky: pygame.Surface  # 320x180, opaque: the sky and its one sun, drawn still
     background: pygame.Surface  # 320x180 clouds and hills over clear sky; tiles horizontally
     heart: pygame.Surface  # 8x8 HUD life
@@ -114,6 +116,7 @@ def load_assets() -> Assets:
         enemy_frames=strip(_image("enemy.png"), SPRITE_PX, SPRITE_PX),
         coin_frames=strip(_image("coin.png"), COIN_PX, COIN_PX),
         exit_image=_image("exit.png"),
+        checkpoint_frames=strip(_image("checkpoint.png"), *CHECKPOINT_SIZE_PX),
         sky=_image("sky.png"),
         background=_image("background.png"),
         heart=_image("heart.png"),

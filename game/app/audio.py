@@ -1,4 +1,4 @@
-"""Play the sound effects and the music, or stay quietly silent when there is no sound card.
+"""Play the sound effects, the jingles and the music, or stay quietly silent without a sound card.
 
 Where it sits: beside the renderer, above the simulation. After each tick the window hands
 the tick's events to :meth:`Audio.play`; like drawing, playing a sound only reads what the
@@ -6,8 +6,10 @@ tick left behind and never changes the game. The sounds are made by :mod:`game.t
 
 What it teaches:
   * **Effects are Sounds, music is streamed.** A ``pygame.mixer.Sound`` is decoded into
-    memory once and can play on several channels at once (coins in quick succession);
-    ``pygame.mixer.music`` decodes one long file as it plays, and loops it. Both are handed
+    memory once and can play on several channels at once (coins in quick succession); the
+    jingles (a checkpoint, a clear, game over, the win) are Sounds too. ``pygame.mixer.music``
+    decodes one long file as it plays, and loops it: one track at a time, the title's or the
+    place's (:data:`MUSIC_TRACKS`), and asking for another swaps it. Both are handed
     bytes read once through the one bounded open
     (:func:`game.app.files.read_small_bytes`), never a path to open themselves.
   * **Sound is optional.** A machine with no audio device, a headless run or a missing file
@@ -24,7 +26,8 @@ What it teaches:
 >>> audio.play("coins")
 Traceback (most recent call last):
     ...
-ValueError: no sound is called 'coins': use one of jump, coin, stomp, hurt, exit, menu, tally
+ValueError: no sound is called 'coins': use one of jump, coin, stomp, hurt, menu, tally, \
+checkpoint, clear, game-over, win
 """
 
 from __future__ import annotations
@@ -39,22 +42,38 @@ from pathlib import Path
 import pygame
 
 from game.app.files import FileProblem, read_small_bytes
+from game.app.places import PLACES
 from game.levels.shipped import ASSETS_DIR
 from game.sim.world import EventKind
 
 ASSETS = ASSETS_DIR
 SOUNDS = ASSETS / "sounds"
 
-# <name>.wav in SOUNDS; "tally" plays when the level-end banner's tally is up
-EFFECT_NAMES = ("jump", "coin", "stomp", "hurt", "exit", "menu", "tally")
-MUSIC_FILE = "music.wav"
-MAX_SOUND_BYTES = 16 * 1024 * 1024  # each sound of the game's own: the music is about 550 kB
+# <name>.wav in SOUNDS; "tally" plays when the level-end banner's tally is up, "game-over"
+# and "win" when the run ends
+EFFECT_NAMES = ("jump", "coin", "stomp", "hurt", "menu", "tally",
+                "checkpoint", "clear", "game-over", "win")
+TITLE_TRACK = "title"  # the menus' music; each place's track is named after the place
+MUSIC_TRACKS = (TITLE_TRACK, *PLACES)  # music-<track>.wav in SOUNDS, each a loop
+
+
+def music_file(track: str) -> str:
+    """The file a music track is read from.
+
+    >>> music_file("caves")
+    'music-caves.wav'
+    """
+    return f"music-{track}.wav"
+
+
+MAX_SOUND_BYTES = 16 * 1024 * 1024  # each sound of the game's own: a music loop is about 350 kB
 SOUND_FOR_EVENT: dict[EventKind, str] = {  # events missing here make no sound
     EventKind.JUMP: "jump",
     EventKind.COIN: "coin",
     EventKind.STOMP: "stomp",
     EventKind.HURT: "hurt",
-    EventKind.EXIT: "exit",
+    EventKind.EXIT: "clear",
+    EventKind.CHECKPOINT: "checkpoint",
 }
 
 MIXER_RATE_HZ = 44100
@@ -91,7 +110,8 @@ def quiet_native_stderr() -> Iterator[None]:
 
 
 class Audio:
-    """The game's speakers: :meth:`play` an effect, :meth:`start_music`, :meth:`set_volume`.
+    """The game's speakers: :meth:`play` an effect, :meth:`start_music` (a track by name),
+    :meth:`set_volume`.
 
     ``enabled=False`` (headless runs) never touches the mixer. Otherwise the mixer is opened
     if it is not open already; if it cannot be, the object is silent and :attr:`status`
@@ -101,7 +121,8 @@ class Audio:
     def __init__(self, sounds: Path = SOUNDS, *, enabled: bool = True) -> None:
         self.status = "Sound is on."
         self._effects: dict[str, pygame.mixer.Sound] = {}
-        self._music: bytes | None = None  # the music file, decoded as it plays
+        self._tracks: dict[str, bytes] = {}  # each music file, decoded as it plays
+        self._track: str | None = None  # the track the mixer has, playing or paused
         self._music_stream: io.BytesIO | None = None  # what the mixer reads it from
         self._music_paused = False
         self._opened_mixer = False
@@ -125,7 +146,7 @@ class Audio:
                            f"in {sounds}): run python -m game.tools.synth to make them.")
 
     def _load(self, sounds: Path) -> list[str]:
-        """Load every effect and find the music; return the names of files that failed."""
+        """Load every effect and read every track; return the names of files that failed."""
         missing: list[str] = []
         for name in EFFECT_NAMES:
             path = sounds / f"{name}.wav"
@@ -134,17 +155,19 @@ class Audio:
                 self._effects[name] = pygame.mixer.Sound(file=io.BytesIO(data))
             except (pygame.error, FileProblem):  # a broken file; a missing one
                 missing.append(path.name)
-        try:
-            self._music = read_small_bytes(sounds / MUSIC_FILE, MAX_SOUND_BYTES, "the music")
-        except FileProblem:
-            missing.append(MUSIC_FILE)
+        for track in MUSIC_TRACKS:
+            path = sounds / music_file(track)
+            try:
+                self._tracks[track] = read_small_bytes(path, MAX_SOUND_BYTES, "the music")
+            except FileProblem:
+                missing.append(path.name)
         self._apply_volumes()
         return missing
 
     @property
     def silent(self) -> bool:
         """True when no sound at all can play."""
-        return not self._effects and self._music is None
+        return not self._effects and not self._tracks
 
     def play(self, sound: EventKind | str) -> None:
         """Play an effect by name (``"menu"``) or for a world event (``EventKind.COIN``).
@@ -165,35 +188,48 @@ class Audio:
         if effect is not None:
             effect.play()
 
-    def start_music(self) -> None:
-        """Loop the music: resume it if paused, start it if stopped, else leave it be."""
-        if self._music is None:
+    @property
+    def track(self) -> str | None:
+        """The track last started and not stopped since (playing or paused), if any."""
+        return self._track
+
+    def start_music(self, track: str = TITLE_TRACK) -> None:
+        """Loop ``track``: resume it if paused, start it if stopped or if another track
+        is on, else leave it be. A track that cannot be played leaves the music silent."""
+        if track not in MUSIC_TRACKS:
+            raise ValueError(f"no music is called {track!r}: use one of "
+                             f"{', '.join(MUSIC_TRACKS)}")
+        music = self._tracks.get(track)
+        if music is None:
+            self.stop_music()
             return
-        if self._music_paused:
+        if track == self._track and self._music_paused:
             pygame.mixer.music.unpause()
             self._music_paused = False
             return
-        if pygame.mixer.music.get_busy():
+        if track == self._track and pygame.mixer.music.get_busy():
             return
         try:
-            self._music_stream = io.BytesIO(self._music)  # kept while the mixer reads it
+            self._music_stream = io.BytesIO(music)  # kept while the mixer reads it
             pygame.mixer.music.load(self._music_stream, "wav")
             pygame.mixer.music.set_volume(self._music_volume)
             pygame.mixer.music.play(loops=-1)
+            self._track, self._music_paused = track, False
         except pygame.error as error:
-            self._music = None
-            self.status = f"The music could not be played ({error})."
+            del self._tracks[track]
+            self._track = None
+            self.status = f"The music {music_file(track)} could not be played ({error})."
 
     def pause_music(self) -> None:
         """Hold the music where it is; :meth:`start_music` carries on from there."""
-        if self._music is not None and pygame.mixer.music.get_busy():
+        if self._track is not None and pygame.mixer.music.get_busy():
             pygame.mixer.music.pause()
             self._music_paused = True
 
     def stop_music(self) -> None:
-        if self._music is not None:
+        if self._track is not None:
             pygame.mixer.music.stop()
-        self._music_paused = False
+        self._track, self._music_paused = None, False
 
     def set_volume(self, effects: float, music: float) -> None:
         """Set both volumes, each from 0 (mute) to 1 (full); values outside are clamped."""
@@ -209,7 +245,7 @@ class Audio:
     def _apply_volumes(self) -> None:
         for effect in self._effects.values():
             effect.set_volume(self._effects_volume)
-        if self._music is not None:
+        if self._tracks:
             pygame.mixer.music.set_volume(self._music_volume)
 
     def close(self) -> None:
@@ -217,6 +253,7 @@ class Audio:
         if self._opened_mixer and pygame.mixer.get_init():
             pygame.mixer.quit()
         self._effects.clear()
-        self._music = self._music_stream = None
+        self._tracks.clear()
+        self._track = self._music_stream = None
         self._music_paused = False
         self._opened_mixer = False

@@ -2,10 +2,11 @@
 
 Where it sits: in the window only (:mod:`game.app.window`). When a tick reports the exit, the
 window stops ticking, keeps the finished level on screen and shows a :class:`Banner` over it:
-the time, the coins taken of those on offer, the enemies stomped, the points scored and
-whether the time beat the best. Its lines appear one after another, the tally sound plays
-when the last is up, and play goes on after :data:`BANNER_S` seconds (or at once on Enter or
-A, once the tally is up).
+the time, the coins taken of those on offer, the enemies stomped, the points scored,
+whether the time beat the best, and, for a level with a target time, whether it earned the
+medal (:mod:`game.app.goals`). A level played with an assist on says so, and keeps no best.
+Its lines appear one after another, the tally sound plays when the last is up, and play
+goes on after :data:`BANNER_S` seconds (or at once on Enter or A, once the tally is up).
 
 The banner costs no simulation ticks: it is a pause of the window, like the pause menu, so
 a headless run, a scripted run and their reports are the same with or without it.
@@ -23,6 +24,7 @@ from dataclasses import dataclass
 import pygame
 
 from game.app.assets import Assets
+from game.app.goals import earns_medal, of_total, target_ticks
 from game.app.hud import DIM_TEXT, GOLD, TEXT_COLOR, draw_text
 from game.app.screens import (
     COLUMN_GAP_PX,
@@ -43,6 +45,9 @@ LINE_EVERY_S = 0.25  # one more line of the tally appears this often
 SKIP_AFTER_S = 0.5  # Enter or A ends the banner once it has been up this long
 HEADING = "Level clear!"
 NEW_BEST_BLINK_HZ = 3.0
+NEW_BEST = "new best!"
+MEDAL_WON = "medal!"
+ASSISTED = "assisted: not kept"  # the Best row of a level played with an assist on
 TALLY_SOUND = "tally"
 
 
@@ -55,25 +60,36 @@ def format_ticks(ticks: int) -> str:
     return format_seconds(ticks * TICK_S)
 
 
-def tally_lines(result: LevelResult, best_before_ticks: int | None) -> list[tuple[str, str]]:
-    """The banner's rows, label and value, in the order they appear.
+def tally_lines(result: LevelResult, best_before_ticks: int | None,
+                target: int | None = None) -> list[tuple[str, str]]:
+    """The banner's rows, label and value, in the order they appear; a Target row when the
+    level has a ``target`` time (in ticks).
 
     >>> from pathlib import Path
     >>> r = LevelResult(Path("a.tmx"), "A", 900, 9, 12, 1, 2, 14)
     >>> tally_lines(r, 1000)[-1], tally_lines(r, 800)[-1], tally_lines(r, None)[-1]
     (('Best', 'new best!'), ('Best', '13.33 s'), ('Best', 'first clear'))
+    >>> tally_lines(r, None, 900)[-1], tally_lines(r, None, 899)[-1]
+    (('Target', '15.00 s medal!'), ('Target', '14.98 s'))
     """
-    if best_before_ticks is None:
+    if result.assisted:
+        best = ASSISTED
+    elif best_before_ticks is None:
         best = "first clear"
     elif result.ticks < best_before_ticks:
-        best = "new best!"
+        best = NEW_BEST
     else:
         best = format_ticks(best_before_ticks)
-    return [("Time", format_ticks(result.ticks)),
-            ("Coins", f"{result.coins} of {result.coins_total}"),
-            ("Stomps", f"{result.stomps} of {result.enemies_total}"),
-            ("Score", f"+{result.score}"),
-            ("Best", best)]
+    lines = [("Time", format_ticks(result.ticks)),
+             ("Coins", of_total(result.coins, result.coins_total)),
+             ("Stomps", of_total(result.stomps, result.enemies_total)),
+             ("Score", f"+{result.score}"),
+             ("Best", best)]
+    if target is not None:
+        medal = earns_medal(result.ticks, target, result.assisted)
+        lines.append(("Target", f"{format_ticks(target)} {MEDAL_WON}" if medal
+                      else format_ticks(target)))
+    return lines
 
 
 @dataclass
@@ -88,7 +104,8 @@ class Banner:
 
     @property
     def lines(self) -> list[tuple[str, str]]:
-        return tally_lines(self.result, self.best_before_ticks)
+        target = None if self.world is None else target_ticks(self.world.level.properties)
+        return tally_lines(self.result, self.best_before_ticks, target)
 
     def lines_shown(self) -> int:
         """How many tally lines are up now: one more every :data:`LINE_EVERY_S`."""
@@ -129,7 +146,7 @@ class Banner:
         blink_on = int(self.shown_s * NEW_BEST_BLINK_HZ * 2) % 2 == 0
         for label, value in lines[:self.lines_shown()]:
             draw_text(target, font, label, (box.left + 2 * PANEL_PAD_PX, y), DIM_TEXT)
-            best = value == "new best!"
+            best = value == NEW_BEST or value.endswith(MEDAL_WON)
             if not best or blink_on:
                 draw_text(target, font, value, (box.right - 2 * PANEL_PAD_PX, y),
                           GOLD if best else TEXT_COLOR, anchor="topright")

@@ -1,4 +1,5 @@
-"""Life on screen: dust, squash and stretch, a shake and a burst on a stomp, a pop on a coin.
+"""Life on screen: dust, squash and stretch, a shake and a burst on a stomp, a pop on a coin,
+a glow as a checkpoint's lantern lights, and a beat of gathering light on a respawn.
 
 Where it sits: in the window, beside the renderer. After every tick the window hands the
 tick's events to :meth:`Effects.observe`; every frame it lets :meth:`Effects.advance` age
@@ -17,7 +18,11 @@ What it teaches:
   * **Juice is feedback for an event.** Each effect answers one thing that happened: a
     jump leaves dust and stretches the hero upwards; a landing squashes him a little (two
     pixels lower and wider: still a hero on his feet, not one knocked flat) and puffs
-    dust to both sides; a stomp bursts the slime and shakes the screen; a coin pops.
+    dust to both sides; a stomp bursts the slime and shakes the screen; a coin pops; a
+    checkpoint's lantern flares as it lights; and on a respawn a ring of lantern light
+    closes in on the hero where he comes back (:data:`RESPAWN_BEAT_S`), so a player sees
+    where play goes on. The beat is drawn only: the simulation runs on through it, exactly
+    as it does headless, so every recorded run and every replay stays the same.
   * **Squash and stretch keep the feet planted.** The picture is scaled, never the hitbox,
     and it is anchored bottom-centre on the box, so the hero squashes *onto* the floor.
   * **Effects age in game time.** The window advances them by the ticks each frame runs
@@ -56,6 +61,15 @@ COIN_SPARK_COUNT = 4
 COIN_SPARK_SPEED_PX_S = 50.0
 COIN_POP_S = 0.25  # the ring round a taken coin grows for this long
 COIN_POP_RADIUS_PX = (2, 9)  # from, to
+LANTERN_COLOR: Color = (255, 240, 128)  # a checkpoint's light: the lit lantern's gold
+LANTERN_GLOW_S = 0.4  # the ring round a lantern that lights grows for this long
+LANTERN_GLOW_RADIUS_PX = (4, 20)  # from, to
+LANTERN_SPARK_COUNT = 6
+LANTERN_SPARK_SPEED_PX_S = 40.0
+RESPAWN_BEAT_S = 0.5  # the ring of light closes in on a respawned hero over this long
+RESPAWN_RADIUS_PX = (28, 2)  # from, to
+RESPAWN_SPARK_COUNT = 8  # specks of light drawn in with the ring
+LANTERN_GLASS_ABOVE_FOOT_PX = 24  # the lantern's glass is this far above its post's foot
 
 STRETCH = (0.8, 1.25)  # width and height scale at the start of a jump
 SQUASH = (1.125, 0.875)  # on a hard landing: 2 px lower and wider, a landing, not a fall flat
@@ -90,12 +104,25 @@ class Pop:
 
 
 @dataclass
+class Ring:
+    """A circle of light whose radius runs from ``radius_px[0]`` to ``radius_px[1]`` over
+    ``life_s``: growing from a lit lantern, or closing in on a respawned hero."""
+
+    x: float
+    y: float
+    life_s: float
+    radius_px: tuple[int, int]
+    age_s: float = 0.0
+
+
+@dataclass
 class Effects:
     """What is on screen for show, and how it ages. One per window."""
 
     shake_on: bool = True
     particles: list[Particle] = field(default_factory=list)
     pops: list[Pop] = field(default_factory=list)
+    rings: list[Ring] = field(default_factory=list)
     squash: tuple[float, float] = (1.0, 1.0)  # the scale a squash or stretch started from
     squash_left_s: float = 0.0
     shake_left_s: float = 0.0
@@ -122,6 +149,10 @@ class Effects:
                 self.shake_left_s = SHAKE_S
             elif event.kind is EventKind.COIN and event.where is not None:
                 self._pop(event.where)
+            elif event.kind is EventKind.CHECKPOINT:
+                self._glow(list(world.checkpoints)[event.value].box)
+            elif event.kind is EventKind.HURT:  # the player is back at the respawn point
+                self._beat(player.box)
         landed = player.on_ground and not self.was_on_ground
         if landed and self.fall_speed_px_s >= LAND_MIN_SPEED_PX_S:
             self._dust(player.box, LAND_DUST_COUNT, upwards=False)
@@ -133,6 +164,7 @@ class Effects:
     def clear(self) -> None:
         self.particles.clear()
         self.pops.clear()
+        self.rings.clear()
         self.squash_left_s = self.shake_left_s = 0.0
 
     def _start_squash(self, scale: tuple[float, float]) -> None:
@@ -169,6 +201,30 @@ class Effects:
                 math.sin(angle) * COIN_SPARK_SPEED_PX_S, COIN_POP_S, COIN_SPARK_COLOR,
                 gravity=False))
 
+    def _glow(self, lantern: Box) -> None:
+        """A lantern lights: a ring of its light grows, and sparks rise from its glass."""
+        cx, cy = lantern.x + lantern.w / 2, lantern.bottom - LANTERN_GLASS_ABOVE_FOOT_PX
+        self.rings.append(Ring(cx, cy, LANTERN_GLOW_S, LANTERN_GLOW_RADIUS_PX))
+        for number in range(LANTERN_SPARK_COUNT):
+            angle = math.pi * (number + 0.5) / LANTERN_SPARK_COUNT  # a fan, upwards
+            self.particles.append(Particle(
+                cx, cy, math.cos(angle) * LANTERN_SPARK_SPEED_PX_S,
+                -math.sin(angle) * LANTERN_SPARK_SPEED_PX_S, LANTERN_GLOW_S, LANTERN_COLOR,
+                gravity=False))
+
+    def _beat(self, hero: Box) -> None:
+        """The hero is back: a ring of light and specks close in on him from all round."""
+        cx, cy = hero.x + hero.w / 2, hero.y + hero.h / 2
+        self.rings.append(Ring(cx, cy, RESPAWN_BEAT_S, RESPAWN_RADIUS_PX))
+        start, end = RESPAWN_RADIUS_PX
+        speed = (start - end) / RESPAWN_BEAT_S
+        for number in range(RESPAWN_SPARK_COUNT):
+            angle = 2 * math.pi * number / RESPAWN_SPARK_COUNT
+            dx, dy = math.cos(angle), math.sin(angle)
+            self.particles.append(Particle(cx + dx * start, cy + dy * start, -dx * speed,
+                                           -dy * speed, RESPAWN_BEAT_S, LANTERN_COLOR,
+                                           gravity=False))
+
     # -- Time ---------------------------------------------------------------------------
 
     def advance(self, game_s: float) -> None:
@@ -183,6 +239,9 @@ class Effects:
         for pop in self.pops:
             pop.age_s += game_s
         self.pops = [pop for pop in self.pops if pop.age_s < COIN_POP_S]
+        for ring in self.rings:
+            ring.age_s += game_s
+        self.rings = [ring for ring in self.rings if ring.age_s < ring.life_s]
         self.squash_left_s = max(0.0, self.squash_left_s - game_s)
         self.shake_left_s = max(0.0, self.shake_left_s - game_s)
 
@@ -223,6 +282,11 @@ class Effects:
             radius = round(low + (high - low) * pop.age_s / COIN_POP_S)
             centre = (math.floor(pop.x) - off_x, math.floor(pop.y) - off_y)
             pygame.draw.circle(target, COIN_COLOR, centre, radius, width=1)
+        for ring in self.rings:
+            start, end = ring.radius_px
+            radius = round(start + (end - start) * ring.age_s / ring.life_s)
+            centre = (math.floor(ring.x) - off_x, math.floor(ring.y) - off_y)
+            pygame.draw.circle(target, LANTERN_COLOR, centre, max(1, radius), width=1)
 
     def shake_offset(self) -> tuple[int, int]:
         """How far the picture is shaken now: a swing that dies away; none if turned off.

@@ -13,10 +13,15 @@ What it teaches:
     sky and a dark cave alike.
   * **Translucency in pygame 2.6** needs a surface with per-pixel alpha (``SRCALPHA``):
     ``pygame.draw`` writes colours, it does not blend them onto an opaque target.
+  * **Draw repeated things once.** An outlined text is two renders and nine blits; the HUD
+    shows the same few texts frame after frame, so each is put together once, on a
+    transparent surface, and kept (:func:`outlined_text`, the last
+    :data:`OUTLINED_TEXTS_KEPT`): a frame blits one picture per text.
 """
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import Literal
 
 import pygame
@@ -46,6 +51,7 @@ LOST_HEART_ALPHA = 70  # 0..255: a life already lost is drawn faint
 SCORE_DIGITS = 5
 ELLIPSIS = "..."
 SMALL_TEXT_ANTIALIAS = False  # ``Assets.small_font`` is crisper unsmoothed at 320x180
+OUTLINED_TEXTS_KEPT = 256  # outlined texts kept ready to blit (the HUD's and the menus')
 
 
 def draw_text(target: pygame.Surface, font: pygame.font.Font, text: str,
@@ -54,17 +60,35 @@ def draw_text(target: pygame.Surface, font: pygame.font.Font, text: str,
               antialias: bool = True) -> pygame.Rect:
     """Draw ``text`` with its ``anchor`` point at ``pos``, outlined 1 px unless ``outline`` is
     None; return the rectangle it covers (without the outline)."""
-    face = font.render(text, antialias, color)
-    rect = face.get_rect()
+    if outline is None:
+        face = font.render(text, antialias, color)
+        rect = face.get_rect()
+        setattr(rect, anchor, pos)
+        target.blit(face, rect)
+        return rect
+    ringed = outlined_text(font, text, antialias, tuple(color), tuple(outline))
+    rect = ringed.get_rect().inflate(-2 * OUTLINE_PX, -2 * OUTLINE_PX)
     setattr(rect, anchor, pos)
-    if outline is not None:
-        edge = font.render(text, antialias, outline)
-        for dx in (-OUTLINE_PX, 0, OUTLINE_PX):
-            for dy in (-OUTLINE_PX, 0, OUTLINE_PX):
-                if dx or dy:
-                    target.blit(edge, rect.move(dx, dy))
-    target.blit(face, rect)
+    target.blit(ringed, rect.move(-OUTLINE_PX, -OUTLINE_PX))
     return rect
+
+
+@lru_cache(maxsize=OUTLINED_TEXTS_KEPT)
+def outlined_text(font: pygame.font.Font, text: str, antialias: bool, color: Color,
+                  outline: Color) -> pygame.Surface:
+    """``text`` in ``color`` ringed by :data:`OUTLINE_PX` of ``outline``, on a transparent
+    surface that much larger each way: the outline drawn at the eight offsets, the text on
+    top. Made once per font, text and colours (kept for the next frames; do not draw on it)."""
+    face = font.render(text, antialias, color)
+    edge = font.render(text, antialias, outline)
+    ringed = pygame.Surface((face.get_width() + 2 * OUTLINE_PX,
+                             face.get_height() + 2 * OUTLINE_PX), pygame.SRCALPHA)
+    for dx in (0, OUTLINE_PX, 2 * OUTLINE_PX):
+        for dy in (0, OUTLINE_PX, 2 * OUTLINE_PX):
+            if (dx, dy) != (OUTLINE_PX, OUTLINE_PX):
+                ringed.blit(edge, (dx, dy))
+    ringed.blit(face, (OUTLINE_PX, OUTLINE_PX))
+    return ringed
 
 
 def fit_text(font: pygame.font.Font, text: str, max_w: int) -> str:
@@ -91,9 +115,23 @@ def translucent_rect(target: pygame.Surface, rect: pygame.Rect, color: Color) ->
     """Fill ``rect`` with an RGBA colour blended over what is already there."""
     if rect.w <= 0 or rect.h <= 0:
         return
-    layer = pygame.Surface(rect.size, pygame.SRCALPHA)
+    target.blit(_wash(rect.size, tuple(color)), rect.topleft)
+
+
+@lru_cache(maxsize=OUTLINED_TEXTS_KEPT)
+def _wash(size: tuple[int, int], color: Color) -> pygame.Surface:
+    """A surface of ``size`` filled with the RGBA ``color``, made once (do not draw on it)."""
+    layer = pygame.Surface(size, pygame.SRCALPHA)
     layer.fill(color)
-    target.blit(layer, rect.topleft)
+    return layer
+
+
+@lru_cache(maxsize=OUTLINED_TEXTS_KEPT)
+def _faint(heart: pygame.Surface) -> pygame.Surface:
+    """The heart of a life already lost, made once (do not draw on it)."""
+    lost = heart.copy()
+    lost.set_alpha(LOST_HEART_ALPHA)
+    return lost
 
 
 def _draw_hearts(target: pygame.Surface, assets: Assets, lives: int, start_lives: int,
@@ -106,8 +144,7 @@ def _draw_hearts(target: pygame.Surface, assets: Assets, lives: int, start_lives
         rect = draw_text(target, assets.font, f"x{lives}",
                          (left + heart.get_width() + ICON_GAP_PX, mid_y), anchor="midleft")
         return rect.right
-    lost = heart.copy()
-    lost.set_alpha(LOST_HEART_ALPHA)
+    lost = _faint(heart)
     x = left
     for index in range(max(lives, start_lives)):
         target.blit(heart if index < lives else lost, (x, top))

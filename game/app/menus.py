@@ -38,6 +38,8 @@ from pathlib import Path
 
 import pygame
 
+from game.app.goals import earns_medal, target_ticks
+from game.app.options import BACK, OPTION_ITEMS, key_action
 from game.app.saves import Progress
 from game.levels import LevelError, load_level
 from game.sim.inputs import NOTHING, Action, Actions
@@ -52,6 +54,8 @@ class Screen(Enum):
     PAUSED = "paused"
     CLEARED = "cleared"  # the level-end banner (game.app.banner), between two levels
     ENDED = "ended"  # game over or won; the campaign's outcome says which
+    OPTIONS = "options"  # volumes, timer, fullscreen, ghost, keys, assists (game.app.options)
+    CREDITS = "credits"  # after the win: who made what, rolling up
 
 
 class Nav(Enum):
@@ -62,11 +66,15 @@ class Nav(Enum):
     CONFIRM = "confirm"  # Enter, Space, pad A
     BACK = "back"  # Esc, pad B: leave this screen (and, on the keyboard, pause)
     PAUSE = "pause"  # P, pad Start: pause or resume
+    LEFT = "left"  # on the options screen: a value down
+    RIGHT = "right"  # on the options screen: a value up
 
 
 NAV_FOR_KEY: Mapping[int, Nav] = {
     pygame.K_UP: Nav.UP, pygame.K_w: Nav.UP,
     pygame.K_DOWN: Nav.DOWN, pygame.K_s: Nav.DOWN,
+    pygame.K_LEFT: Nav.LEFT, pygame.K_a: Nav.LEFT,
+    pygame.K_RIGHT: Nav.RIGHT, pygame.K_d: Nav.RIGHT,
     pygame.K_RETURN: Nav.CONFIRM, pygame.K_KP_ENTER: Nav.CONFIRM, pygame.K_SPACE: Nav.CONFIRM,
     pygame.K_ESCAPE: Nav.BACK, pygame.K_BACKSPACE: Nav.BACK,
     pygame.K_p: Nav.PAUSE,
@@ -83,10 +91,12 @@ def key_nav(event: pygame.event.Event) -> Nav | None:
     return NAV_FOR_KEY.get(event.key) if event.type == pygame.KEYDOWN else None
 
 
-PLAY, LEVEL_SELECT, QUIT = "Play", "Level select", "Quit"
-TITLE_ITEMS = (PLAY, LEVEL_SELECT, QUIT)
+PLAY, LEVEL_SELECT, OPTIONS, QUIT = "Play", "Level select", "Options", "Quit"
+TITLE_ITEMS = (PLAY, LEVEL_SELECT, OPTIONS, QUIT)
 RESUME, RESTART, TIMER, QUIT_TO_TITLE = "Resume", "Restart level", "Timer", "Quit to title"
-PAUSE_ITEMS = (RESUME, RESTART, TIMER, QUIT_TO_TITLE)
+PAUSE_ITEMS = (RESUME, RESTART, TIMER, OPTIONS, QUIT_TO_TITLE)
+RETRY = "Retry this level"
+GAME_OVER_ITEMS = (RETRY, QUIT_TO_TITLE)
 
 
 @dataclass(frozen=True)
@@ -102,6 +112,11 @@ class RestartLevel:
 
 
 @dataclass(frozen=True)
+class RetryLevel:
+    """After game over: the level lost starts again from its spawn with full lives."""
+
+
+@dataclass(frozen=True)
 class QuitGame:
     """Close the window."""
 
@@ -111,7 +126,23 @@ class ToggleTimer:
     """Show the HUD's timer if it is hidden, hide it if it is shown (a setting, saved)."""
 
 
-Command = StartLevel | RestartLevel | QuitGame | ToggleTimer
+@dataclass(frozen=True)
+class ChangeOption:
+    """Change the options row ``item`` one notch: ``step`` +1 or -1 (game.app.options)."""
+
+    item: str
+    step: int
+
+
+@dataclass(frozen=True)
+class RebindKey:
+    """Wait for a key press, and bind ``action`` to that key."""
+
+    action: str
+
+
+Command = (StartLevel | RestartLevel | RetryLevel | QuitGame | ToggleTimer | ChangeOption
+           | RebindKey)
 
 
 @dataclass(frozen=True)
@@ -121,6 +152,8 @@ class LevelInfo:
     path: Path
     title: str
     problem: str | None = None  # why it cannot be loaded, if it cannot
+    coins_total: int = 0  # the coins the level holds
+    target_ticks: int | None = None  # its target time (game.app.goals), if it has one
 
 
 @dataclass(frozen=True)
@@ -133,6 +166,8 @@ class LevelEntry:
     best_s: float | None = None  # fastest finish, in seconds of game time
     best_coins: int | None = None  # most coins taken in one finish
     problem: str | None = None
+    coins_total: int = 0  # the coins the level holds
+    medal: bool = False  # the best time is within the level's target time
 
     @property
     def playable(self) -> bool:
@@ -147,6 +182,10 @@ class Menus:
     title_item: int = 0  # index into TITLE_ITEMS
     level_item: int = 0  # index into the level select's entries
     pause_item: int = 0  # index into PAUSE_ITEMS
+    options_item: int = 0  # index into game.app.options.OPTION_ITEMS
+    options_from: Screen = Screen.TITLE  # where Back on the options screen returns to
+    game_over_item: int = 0  # index into GAME_OVER_ITEMS
+    won: bool = False  # on Screen.ENDED: the win (then the credits), else game over
 
 
 def outline(path: Path) -> Level:
@@ -171,7 +210,8 @@ def campaign_levels(first: Path, load: Callable[[Path], Level] = outline
         except LevelError as error:
             levels.append(LevelInfo(path, path.stem, str(error)))
             break
-        levels.append(LevelInfo(path, level.title or path.stem))
+        levels.append(LevelInfo(path, level.title or path.stem, None, len(level.coins),
+                                target_ticks(level.properties)))
         path = level.next_level
     return tuple(levels)
 
@@ -185,7 +225,8 @@ def level_entries(levels: Sequence[LevelInfo], progress: Progress) -> tuple[Leve
         unlocked = number == 0 or name in progress.unlocked or ticks is not None
         entries.append(LevelEntry(info.path, info.title, unlocked,
                                   None if ticks is None else ticks * TICK_S,
-                                  progress.best_coins.get(name), info.problem))
+                                  progress.best_coins.get(name), info.problem, info.coins_total,
+                                  ticks is not None and earns_medal(ticks, info.target_ticks)))
     return tuple(entries)
 
 
@@ -202,9 +243,10 @@ def press(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]) -> tuple[Menus, 
     return _SCREENS[menus.screen](menus, nav, levels)
 
 
-def ended(menus: Menus) -> Menus:
-    """The run is over (won or lost): show the result until it is confirmed."""
-    return replace(menus, screen=Screen.ENDED)
+def ended(menus: Menus, won: bool = False) -> Menus:
+    """The run is over (won or lost): show the result until it is confirmed; game over
+    opens on Retry this level."""
+    return replace(menus, screen=Screen.ENDED, won=won, game_over_item=0)
 
 
 def cleared(menus: Menus) -> Menus:
@@ -230,6 +272,8 @@ def _title(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
     chosen = TITLE_ITEMS[menus.title_item]
     if chosen == QUIT:
         return menus, QuitGame()
+    if chosen == OPTIONS:
+        return replace(menus, screen=Screen.OPTIONS, options_from=Screen.TITLE), None
     if not levels:
         return menus, None
     start = next_to_play(levels)
@@ -270,6 +314,8 @@ def _paused(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
         return replace(menus, screen=Screen.PLAYING), RestartLevel()
     if chosen == TIMER:  # a setting: the menu stays up, showing the new state
         return menus, ToggleTimer()
+    if chosen == OPTIONS:
+        return replace(menus, screen=Screen.OPTIONS, options_from=Screen.PAUSED), None
     if chosen == QUIT_TO_TITLE:
         return replace(menus, screen=Screen.TITLE), None
     return replace(menus, screen=Screen.PLAYING), None
@@ -284,11 +330,48 @@ def _cleared(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
 
 def _ended(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
            ) -> tuple[Menus, Command | None]:
+    """The win gives way to the credits. Game over retries the level lost, or goes back to
+    the title (Back does too)."""
+    if menus.won:
+        if nav in (Nav.CONFIRM, Nav.BACK):
+            return replace(menus, screen=Screen.CREDITS), None
+        return menus, None
+    if nav is Nav.BACK:
+        return _to_title(menus), None
+    if nav is not Nav.CONFIRM:
+        return replace(menus, game_over_item=_step(menus.game_over_item, nav,
+                                                   len(GAME_OVER_ITEMS))), None
+    if GAME_OVER_ITEMS[menus.game_over_item] == RETRY:
+        return replace(menus, screen=Screen.PLAYING), RetryLevel()
+    return _to_title(menus), None
+
+
+def _credits(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
+             ) -> tuple[Menus, Command | None]:
+    if nav in (Nav.CONFIRM, Nav.BACK):
+        return _to_title(menus), None
+    return menus, None
+
+
+def _to_title(menus: Menus) -> Menus:
     """Back to the title with Play lit, whatever was lit when this run began: a second
     Enter plays on (from the first level not yet finished)."""
-    if nav in (Nav.CONFIRM, Nav.BACK):
-        return replace(menus, screen=Screen.TITLE, title_item=TITLE_ITEMS.index(PLAY)), None
-    return menus, None
+    return replace(menus, screen=Screen.TITLE, title_item=TITLE_ITEMS.index(PLAY))
+def _options(menus: Menus, nav: Nav, levels: Sequence[LevelEntry]
+             ) -> tuple[Menus, Command | None]:
+    """Up and down pick a row; left and right change its value, Enter changes it up (a key
+    row: waits for the new key); Back (the row, Esc or B) returns where the screen came from."""
+    chosen = OPTION_ITEMS[menus.options_item]
+    if nav in (Nav.BACK, Nav.PAUSE) or (nav is Nav.CONFIRM and chosen == BACK):
+        return replace(menus, screen=menus.options_from), None
+    if nav in (Nav.UP, Nav.DOWN):
+        return replace(menus, options_item=_step(menus.options_item, nav,
+                                                 len(OPTION_ITEMS))), None
+    if (action := key_action(chosen)) is not None:
+        return menus, RebindKey(action) if nav is Nav.CONFIRM else None
+    if chosen == BACK:
+        return menus, None
+    return menus, ChangeOption(chosen, -1 if nav is Nav.LEFT else +1)
 
 
 _SCREENS: dict[Screen, Callable[[Menus, Nav, Sequence[LevelEntry]],
@@ -299,6 +382,8 @@ _SCREENS: dict[Screen, Callable[[Menus, Nav, Sequence[LevelEntry]],
     Screen.PAUSED: _paused,
     Screen.CLEARED: _cleared,
     Screen.ENDED: _ended,
+    Screen.OPTIONS: _options,
+    Screen.CREDITS: _credits,
 }
 
 

@@ -8,7 +8,8 @@ A frame, in order (:meth:`WorldRenderer.draw`):
 
 1. **Sky**: the level's place (:mod:`game.app.places`, the map property ``setting``) gives
    the still sky with its sun, then the scenery, scrolled by parallax and standing on the
-   level's floor line, and below that line the darkness a pit falls into.
+   level's floor line, and below that line the darkness a pit falls into; over it, the
+   moving platforms' tracks (:mod:`game.app.tracks`).
 2. **Tile layers behind the sprites**, each from its cache of pre-drawn chunks.
 3. **Sprites**: every sprite's ``update(frame)`` picks its picture, then one
    :class:`CameraGroup` blits each ``image`` at its ``rect`` minus the camera, in the
@@ -39,7 +40,10 @@ What it teaches:
     are kept.
   * **Parallax**: the clouds and hills scroll at a fraction of the camera's speed, so they
     look far away, and repeat horizontally, so they never run out; the sky and its sun,
-    further still, do not move at all.
+    further still, do not move at all. The sky, the scenery and the pits' darkness depend
+    on the camera's whole-pixel place alone, so they are painted together into one opaque
+    backdrop, and painted again only when that place changes: a still camera costs one
+    plain blit a frame.
   * **The background must not lie about the ground.** Scenery that reaches below the floor
     looks like somewhere to land; so it ends at the level's floor line (:func:`floor_line_px`)
     and a pit shows only darkness below it.
@@ -65,6 +69,7 @@ from game.app.places import (
     place_of,
     recolour,
 )
+from game.app.tracks import Tracks
 from game.collision.shapes import TileKind
 from game.collision.tile_grid import TileGrid
 from game.sim.camera import Camera
@@ -88,7 +93,6 @@ PLANK_EDGE_COLOR = (62, 36, 20)
 PLANK_TOP_PX = 2
 PLANK_BOLT_INSET_PX = 3
 PLANK_BOLT_GAP_PX = 8
-UNREACHED_TINT = (120, 120, 140)  # a checkpoint flag not yet touched is drawn greyed
 
 OPAQUE = 255  # surface alpha of a fully opaque layer
 ARGB_HEX_DIGITS = 8  # Tiled writes "#aarrggbb" when the background colour has alpha
@@ -188,7 +192,9 @@ def floor_line_px(grid: TileGrid) -> int:
 
 def pit_spans_px(grid: TileGrid, floor_px: int) -> list[tuple[int, int]]:
     """The stretches of the map, ``(left, right)`` in px, with no solid tile at the floor
-    line: the pits, where the background shows darkness below that line.
+    line or anywhere below it: the pits, where the background shows darkness below that
+    line. Ground lower than the floor line (a lowered floor, a dip) is somewhere to land,
+    not a pit, and keeps the scenery behind it.
 
     >>> grid = TileGrid(cols=4, rows=4, tile_w=16, tile_h=16)
     >>> pit_spans_px(grid, 48)
@@ -197,7 +203,8 @@ def pit_spans_px(grid: TileGrid, floor_px: int) -> list[tuple[int, int]]:
     row = min(floor_px // grid.tile_h, grid.rows - 1)
     spans: list[tuple[int, int]] = []
     for col in range(grid.cols):
-        if any(shape.kind is TileKind.SOLID for shape in grid.shapes_at(col, row)):
+        if any(shape.kind is TileKind.SOLID for below in range(row, grid.rows)
+               for shape in grid.shapes_at(col, below)):
             continue
         left = col * grid.tile_w
         if spans and spans[-1][1] == left:
@@ -205,13 +212,6 @@ def pit_spans_px(grid: TileGrid, floor_px: int) -> list[tuple[int, int]]:
         else:
             spans.append((left, left + grid.tile_w))
     return spans
-
-
-def greyed(image: pygame.Surface) -> pygame.Surface:
-    """A copy of ``image`` multiplied by :data:`UNREACHED_TINT`."""
-    copy = image.copy()
-    copy.fill(UNREACHED_TINT, special_flags=pygame.BLEND_RGB_MULT)
-    return copy
 
 
 def _visible_range(lo_px: float, hi_px: float, cell: int, count: int,
@@ -381,7 +381,7 @@ class WorldRenderer:
         self.enemy_strip = Strip.of(assets.enemy_frames)
         self.coin_strip = Strip.of(assets.coin_frames)
         self.exit_strip = Strip.of([assets.exit_image])
-        self.checkpoint_strip = Strip.of([greyed(assets.exit_image), assets.exit_image])
+        self.checkpoint_strip = Strip.of(assets.checkpoint_frames)  # unlit, then lit
         self.plank_strips: dict[tuple[int, int], Strip] = {}
         sky = assets.sky  # an opaque sky hides the level's colour: no need to fill
         opaque_px = pygame.mask.from_surface(sky, OPAQUE - 1).count()
@@ -395,6 +395,9 @@ class WorldRenderer:
         self.floor_px = 0  # the level's floor line, in map px
         self.pits: list[tuple[int, int]] = []  # where the floor line has no ground, in map px
         self.pit: pygame.Surface | None = None  # the place's pit darkness, made once a level
+        self.backdrop: pygame.Surface | None = None  # sky, scenery and pits, painted together
+        self.backdrop_at: tuple[int, int] | None = None  # the camera place it was painted for
+        self.tracks = Tracks(())  # the moving platforms' routes, made once a level
 
     def draw(self, target: pygame.Surface, world: World, frame: int) -> None:
         """Paint the world view onto ``target`` (the 320x180 logical screen).
@@ -407,8 +410,9 @@ class WorldRenderer:
         if self.effects is not None:  # a stomp's shake: the world swings, the sky stays
             shake_x, shake_y = self.effects.shake_offset()
             offset = (offset[0] - shake_x, offset[1] - shake_y)
-        # 1. Sky.
+        # 1. Sky, and the platforms' tracks over it.
         self._draw_sky(target, world)
+        self.tracks.draw(target, offset)
         # 2. Tile layers behind the sprites.
         for cache in self.back:
             cache.draw(target, offset, frame)
@@ -437,6 +441,8 @@ class WorldRenderer:
         self.floor_px = floor_line_px(level.grid)
         self.pits = pit_spans_px(level.grid, self.floor_px)
         self.pit = None
+        self.backdrop_at = None
+        self.tracks = Tracks(level.platforms)
 
     def _cast_new_sprites(self, world: World) -> None:
         """Add the world's sprites the group does not hold yet (all at first, then a squashed
@@ -468,6 +474,18 @@ class WorldRenderer:
         raise TypeError(f"no pictures for a {type(sprite).__name__}")
 
     def _draw_sky(self, target: pygame.Surface, world: World) -> None:
+        """The backdrop (:meth:`_paint_sky`), painted again only when the camera's whole-pixel
+        place or the screen's size has changed since it was last painted."""
+        at = screen_offset(world.camera)
+        size = target.get_size()
+        if self.backdrop is None or self.backdrop.get_size() != size:
+            self.backdrop, self.backdrop_at = pygame.Surface(size).convert(target), None
+        if at != self.backdrop_at:
+            self._paint_sky(self.backdrop, world)
+            self.backdrop_at = at
+        target.blit(self.backdrop, (0, 0))
+
+    def _paint_sky(self, target: pygame.Surface, world: World) -> None:
         """The place's sky and its one sun stand still (they are far away); its scenery in
         front scrolls by parallax, repeats, and stands on the floor line; below that line
         is the pit's darkness. None of it shakes with a stomp."""
@@ -485,6 +503,10 @@ class WorldRenderer:
             target.blit(scenery, (x, floor_y - SCENERY_FLOOR_ROW))
             x += scenery_w
         height, width = target.get_height(), target.get_width()
+        under = floor_y - SCENERY_FLOOR_ROW + scenery.get_height()  # the scenery's bottom
+        if under < height:  # a floor lowered far below the line: the scenery goes on down
+            target.fill(scenery.get_at((0, scenery.get_height() - 1)),
+                        (0, under, width, height - under))
         if floor_y >= height or not self.pits:
             return
         if self.pit is None or self.pit.get_width() != width:

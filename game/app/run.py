@@ -12,12 +12,16 @@ A frame in the window (:mod:`game.app.window`), in order:
    its panel compact, full or hidden), F11 (fullscreen), and
    menu presses from keys and pads (:mod:`game.app.menus`).
 2. **Ticks**: the fixed-step loop (:mod:`game.sim.fixed_step`) says how many 1/60 s ticks are
-   due (none while frozen, one per F3); each one reads the held actions (keyboard and pads
-   together, or the script) and calls ``Campaign.tick``.
+   due (none while frozen, one per F3, fewer at a game speed under 100 %, an assist);
+   each one reads the held actions (keyboard and pads together, or the script) and calls
+   ``Campaign.tick``.
 3. **Banner**: a finished level's tally counts up while the simulation waits for it.
 4. **Draw**: world, HUD, the debug overlay if on, then any screen (title, pause, ...).
 
-Headless runs skip 1, 3 and 4 and step as fast as the machine allows.
+Headless runs skip 1, 3 and 4 and step as fast as the machine allows. A headless run
+without ``--ticks`` first says on standard output what it will run (:func:`announcement`).
+A run given an input script and no ``--ticks`` plays that script's level alone: it ends when
+the level is won or lost, unless ``--go-on`` asks it to play on into the levels after it.
 """
 
 from __future__ import annotations
@@ -46,6 +50,7 @@ from game.app.frame import render_frame
 from game.app.report import Timing, build_report
 from game.levels import FIRST_LEVEL, LevelError, load_level
 from game.levels.budget import MAX_LEVELS_PER_RUN
+from game.levels.closed_output import say
 from game.levels.errors import escaped
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import NOTHING, Action, Actions, InputScript, InputScriptError, Recorder
@@ -184,6 +189,41 @@ def _game_time(ticks: int) -> str:
     return f"{seconds / 3600:g} h" if seconds >= 3600 else f"{seconds:g} s"
 
 
+def levels_to_play(args: argparse.Namespace) -> int | None:
+    """How many levels the run plays: one, the script's own, for a run given an input script
+    and neither ``--ticks`` nor ``--go-on``; else None, every level ``next_level`` leads to."""
+    scripted_alone = args.inputs is not None and args.ticks is None
+    return 1 if scripted_alone and not getattr(args, "go_on", False) else None
+
+
+def announcement(args: argparse.Namespace, first_level: Path, program: str) -> str:
+    """The line a headless run without ``--ticks`` starts with: what it will play, with what
+    input, and until when.
+
+    >>> args = argparse.Namespace(inputs=Path("win.txt"), ticks=None, go_on=False)
+    >>> line = announcement(args, Path("levels/a.tmx"), "python -m game")
+    >>> line.split(" — ")  # doctest: +NORMALIZE_WHITESPACE
+    ['python -m game: playing levels/a.tmx with the input script win.txt until that level is
+      won or every life is lost, for at most 216,000 ticks (1 h of game time)',
+     'give --go-on to play on into the levels after it, or --ticks N to stop at tick N']
+    """
+    level = escaped(level_label(first_level))
+    limit = (f"for at most {HEADLESS_TICK_LIMIT:,} ticks ({_game_time(HEADLESS_TICK_LIMIT)} "
+             "of game time)")
+    if args.inputs is None:
+        return (f"{program}: playing {level} and the levels after it with no input held, until "
+                f"the last is won or every life is lost, {limit} — give --ticks N to stop at "
+                "tick N")
+    script = escaped(shown(args.inputs))
+    if levels_to_play(args) is None:
+        return (f"{program}: playing {level} and the levels after it with the input script "
+                f"{script}, until the last is won or every life is lost, {limit} — give "
+                "--ticks N to stop at tick N")
+    return (f"{program}: playing {level} with the input script {script} until that level is "
+            f"won or every life is lost, {limit} — give --go-on to play on into the levels "
+            "after it, or --ticks N to stop at tick N")
+
+
 def _clashes(args: argparse.Namespace, level: Level) -> list[str]:
     """Every output that names a file the run reads (the level, a file it uses, the input
     script) or the same file as another output; asked before the first tick."""
@@ -242,10 +282,13 @@ def run(args: argparse.Namespace, play_in_window: Callable[[Run], int],
         # The report's max_penetration_px is measured only when a report is written; the
         # overlay's query log is kept only while the overlay is on.
         measure = Measure(penetration=args.report is not None, queries=bool(args.debug))
-        campaign = Campaign(first_level, loader=loader, measure=measure)
+        campaign = Campaign(first_level, loader=loader, measure=measure,
+                            levels_to_play=levels_to_play(args))
         if clashing := _clashes(args, campaign.world.level):
             return fail("\n".join(clashing), EXIT_BAD_FILE)
         game_run = Run(campaign, script, args)
+        if args.headless and args.ticks is None:
+            say(announcement(args, first_level, program))
         status = run_headless(game_run) if args.headless else play_in_window(game_run)
         return EXIT_BAD_FILE if game_run.output_failed else status
     except LevelError as error:

@@ -43,6 +43,7 @@ from typing import Any, NamedTuple, TypeVar
 
 from game.app.files import FileProblem, read_small_text, remove_orphans, write_text_atomically
 from game.sim.campaign import Campaign
+from game.sim.inputs import NOTHING, Actions, Recorder
 from game.sim.level import Level
 from game.sim.world import Event, EventKind, World
 
@@ -204,11 +205,12 @@ class Progress:
     best_coins: dict[str, int] = field(default_factory=dict)  # most coins in one finish
 
     def complete_level(self, level: str, ticks: int, coins: int,
-                       next_level: str | None) -> bool:
-        """Record a finished level and unlock the next; True if it set a best."""
+                       next_level: str | None, *, timed: bool = True) -> bool:
+        """Record a finished level and unlock the next; True if it set a best. A finish not
+        ``timed`` (an assist was on) sets no best time."""
         if next_level is not None:
             self.unlocked.add(next_level)
-        faster = level not in self.best_ticks or ticks < self.best_ticks[level]
+        faster = timed and (level not in self.best_ticks or ticks < self.best_ticks[level])
         richer = coins > self.best_coins.get(level, -1)
         if faster:
             self.best_ticks[level] = ticks
@@ -217,8 +219,10 @@ class Progress:
         return faster or richer
 
     def record(self, finish: Finish) -> bool:
-        """:meth:`complete_level` for a finish reported by :class:`Attempt`."""
-        return self.complete_level(finish.level, finish.ticks, finish.coins, finish.next_level)
+        """:meth:`complete_level` for a finish reported by :class:`Attempt`. A finish with an
+        assist on unlocks the next level and counts its coins, but sets no best time."""
+        return self.complete_level(finish.level, finish.ticks, finish.coins, finish.next_level,
+                                   timed=not finish.assisted)
 
     def to_json(self) -> dict[str, Any]:
         return {"version": PROGRESS_VERSION, "unlocked": sorted(self.unlocked),
@@ -269,6 +273,7 @@ class Finish(NamedTuple):
     ticks: int
     coins: int
     next_level: str | None
+    assisted: bool = False  # an assist was on: no best time is kept, and no ghost
 
 
 @dataclass
@@ -282,20 +287,26 @@ class Attempt:
     world: World | None = None
     started_tick: int = 0  # campaign.ticks when the attempt's first tick began
     coins: int = 0
+    inputs: Recorder = field(default_factory=Recorder)  # this attempt's, from its first tick
 
     def before_tick(self, campaign: Campaign) -> None:
         if campaign.world is not self.world:
             self.world, self.started_tick, self.coins = campaign.world, campaign.ticks, 0
+            self.inputs = Recorder()
 
-    def after_tick(self, campaign: Campaign, events: Sequence[Event]) -> Finish | None:
-        """Count the tick's coins; at the exit, return the finish (the world has moved on)."""
+    def after_tick(self, campaign: Campaign, events: Sequence[Event],
+                   held: Actions = NOTHING) -> Finish | None:
+        """Count the tick's coins and keep what was ``held`` (in ``inputs``, for the ghost);
+        at the exit, return the finish (the world has moved on)."""
+        self.inputs.observe(campaign.ticks - 1 - self.started_tick, held)
         self.coins += sum(1 for event in events if event.kind is EventKind.COIN)
         if self.world is None or not any(event.kind is EventKind.EXIT for event in events):
             return None
         level = self.world.level
         following = level.next_level
+        assisted = bool(campaign.results) and campaign.results[-1].assisted
         return Finish(level.path.name, campaign.ticks - self.started_tick, self.coins,
-                      None if following is None else following.name)
+                      None if following is None else following.name, assisted)
 
 
 @dataclass(frozen=True)

@@ -1,4 +1,4 @@
-"""Full-screen states: the title menu, the level select, pause, game over and the win screen.
+"""Full-screen states: the title menu, the level select, pause, game over, the win and credits.
 
 Where it sits: the app draws one of these instead of (title, level select) or on top of
 (pause, game over, win) the world and the HUD, on the same 320x180 logical screen. They read
@@ -23,11 +23,12 @@ What it teaches:
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 import pygame
 
 from game.app.assets import Assets
+from game.app.goals import of_total
 from game.app.hud import (
     DIM_TEXT,
     GOLD,
@@ -39,13 +40,23 @@ from game.app.hud import (
     fit_text,
     translucent_rect,
 )
-from game.app.menus import PAUSE_ITEMS, TIMER, TITLE_ITEMS, LevelEntry, next_to_play
+from game.app.menus import (
+    GAME_OVER_ITEMS,
+    OPTIONS,
+    PAUSE_ITEMS,
+    TIMER,
+    TITLE_ITEMS,
+    LevelEntry,
+    next_to_play,
+)
+from game.app.settings import DEFAULT_KEYS
 from game.sim.campaign import Campaign, totals
 from game.sim.sprite import ANIMATION_HZ, animation_index
 from game.sim.tuning import TICK_S
 
 GAME_TITLE = "Tile Hopper"
 LEVEL_SELECT_TITLE = "Level select"
+OPTIONS_HINT = "Volumes, keys, the ghost and the assists"
 
 DIM_MULTIPLIER = (96, 96, 120)  # the frame behind a menu is multiplied by this / 255
 PANEL_COLOR: Color = (12, 10, 28, 215)
@@ -90,9 +101,28 @@ COIN_FPS = 8
 LEVEL_SELECT_HEADING_Y_PX = 14  # centre of the letters of "Level select"
 LEVEL_NUMBER_W_PX = 16  # the "1." column of the level select
 BEST_TIME_W_PX = 44  # the best-time column, right-aligned
-BEST_COINS_W_PX = 28  # the coins column, right-aligned
+BEST_COINS_W_PX = 40  # the coins column ("12 of 15"), right-aligned
+MEDAL_W_PX = 9  # the medal column, after the best time
+MEDAL_RADIUS_PX = 3  # the medal drawn beside a best time within the level's target
+MEDAL_COLOR: Color = (255, 214, 90)
 LOCK_BODY_PX = (7, 5)  # the padlock's body, width and height
 LOCK_SHACKLE_H_PX = 3  # how far its shackle rises above the body
+
+CREDITS_SCROLL_PX_S = 16  # how fast the credits roll up the screen
+CREDITS_TOP_PX = 34  # the rolling lines pass under the heading and vanish above this row
+CREDITS_BOTTOM_GAP_PX = 34  # they rise from this far above the bottom, over the runners
+CREDITS_STOP_ROW_PX = 96  # the last line stops rising when it reaches this row
+CREDITS_ROLE_GAP_PX = 6  # between one credit and the next
+CREDITS = (  # (what, who or how): the roll after the win, top to bottom
+    ("Tile Hopper", "a platformer about collisions"),
+    ("Code", "Python, with pygame and pytmx"),
+    ("Levels", "drawn in Tiled, checked by the game's own solver"),
+    ("Art", "drawn pixel by pixel by game/tools/art.py"),
+    ("Font", "drawn by game/tools/pixel_font.py"),
+    ("Music and sounds", "synthesised by game/tools/synth.py"),
+    ("Licence", "every picture and sound is CC0"),
+)
+CREDITS_LAST = "Thank you for playing!"
 
 CONTROLS = (  # action, keyboard, pad (an Xbox-style pad with the default buttons)
     ("Move", "Arrows / WASD", "Stick / D-pad"),
@@ -103,6 +133,29 @@ CONTROLS = (  # action, keyboard, pad (an Xbox-style pad with the default button
     ("Fullscreen", "F11", "F11"),
 )
 CONTROLS_HEADINGS = ("", "Keyboard", "Gamepad")
+KEY_NAMES_SHOWN = 2  # a bound action's keys the title lists; the options screen shows all
+
+
+def controls_rows(keys: Mapping[str, Sequence[str]] | None = None
+                  ) -> tuple[tuple[str, str, str], ...]:
+    """The title's controls table, with the keyboard column the player's own bindings
+    (``keys``: action name -> pygame key names, as the options screen saves them); None or
+    the default bindings give the table as written in :data:`CONTROLS`.
+
+    >>> controls_rows({"left": ["j"], "right": ["l"], "jump": ["k", "x", "c"]})[:2]
+    (('Move', 'J / L', 'Stick / D-pad'), ('Jump', 'K / X', 'A'))
+    """
+    if keys is None or all(list(keys.get(action, ())) == list(names)
+                           for action, names in DEFAULT_KEYS.items()):
+        return CONTROLS
+
+    def shown(action: str) -> str:
+        names = list(keys.get(action, ()))[:KEY_NAMES_SHOWN]
+        return " / ".join(name.title() for name in names) or "-"
+
+    move = (CONTROLS[0][0], f"{shown('left')} / {shown('right')}", CONTROLS[0][2])
+    jump = (CONTROLS[1][0], shown("jump"), CONTROLS[1][2])
+    return (move, jump, *CONTROLS[2:])
 
 
 def heading_h(assets: Assets) -> int:
@@ -179,13 +232,14 @@ def _draw_sky(target: pygame.Surface, assets: Assets, frame: int) -> None:
 
 
 def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int,
-               levels: Sequence[LevelEntry], *, pad: bool = False) -> None:
+               levels: Sequence[LevelEntry], *, pad: bool = False,
+               keys: Mapping[str, Sequence[str]] | None = None) -> None:
     """The title screen: drifting sky, the game's name, the menu, how to play, a running hero.
 
     ``frame`` counts at :data:`game.sim.sprite.ANIMATION_HZ` per second and drives the motion;
     ``TITLE_ITEMS[selected]`` is lit, and a line under the panels says what it leads to. The
     controls shown are the gamepad's if ``pad`` (the last thing pressed was on a pad), else
-    the keyboard's.
+    the keyboard's, as the player has bound them (``keys``, see :func:`controls_rows`).
     """
     _draw_sky(target, assets, frame)
     seconds = frame / ANIMATION_HZ
@@ -211,7 +265,8 @@ def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int
     menu_w, menu_h = menu_size(assets.font, TITLE_ITEMS)
     menu = pygame.Rect(0, top, menu_w + 2 * PANEL_PAD_PX, menu_h + 2 * PANEL_PAD_PX)
     column = 2 if pad else 1
-    controls = _controls_panel(assets, top)
+    rows = controls_rows(keys)
+    controls = _controls_panel(assets, top, rows)
     menu.left = (target.get_width() - menu.w - PANEL_GAP_PX - controls.w) // 2
     controls.left = menu.right + PANEL_GAP_PX
     draw_panel(target, menu)
@@ -223,12 +278,14 @@ def draw_title(target: pygame.Surface, assets: Assets, frame: int, selected: int
         draw_text(target, font, fit_text(font, hint, pair.w),
                   (pair.centerx, pair.bottom + LINE_GAP_PX), DIM_TEXT, anchor="midtop",
                   antialias=SMALL_TEXT_ANTIALIAS)
-    _draw_controls(target, assets, controls, column)
+    _draw_controls(target, assets, controls, column, rows)
     _draw_runners(target, assets, frame)
 
 
 def _title_hint(item: str, levels: Sequence[LevelEntry]) -> str:
     """What a title menu item leads to: the level Play starts, how many are unlocked."""
+    if item == OPTIONS:
+        return OPTIONS_HINT
     if not levels or item == TITLE_ITEMS[-1]:
         return ""
     if item == TITLE_ITEMS[0]:
@@ -238,11 +295,12 @@ def _title_hint(item: str, levels: Sequence[LevelEntry]) -> str:
     return f"{unlocked} of {len(levels)} levels unlocked"
 
 
-def _controls_panel(assets: Assets, top: int) -> pygame.Rect:
+def _controls_panel(assets: Assets, top: int,
+                    controls: Sequence[tuple[str, str, str]]) -> pygame.Rect:
     """Where the controls table goes: wide enough for either device's column, so the title
     does not shift when the player picks up a pad."""
     font = assets.small_font
-    rows = (CONTROLS_HEADINGS, *CONTROLS)
+    rows = (CONTROLS_HEADINGS, *controls)
     labels_w = max(font.size(row[0])[0] for row in rows)
     columns_w = labels_w + max(font.size(text)[0] for row in rows for text in row[1:])
     return pygame.Rect(0, top, columns_w + COLUMN_GAP_PX + 2 * PANEL_PAD_PX,
@@ -250,12 +308,12 @@ def _controls_panel(assets: Assets, top: int) -> pygame.Rect:
 
 
 def _draw_controls(target: pygame.Surface, assets: Assets, panel: pygame.Rect,
-                   column: int) -> None:
+                   column: int, controls: Sequence[tuple[str, str, str]]) -> None:
     """The controls as a table: what, and which keys (column 1) or pad buttons (column 2)."""
     font = assets.small_font
     translucent_rect(target, panel, PANEL_COLOR)
     y = panel.top + PANEL_PAD_PX
-    for number, row in enumerate((CONTROLS_HEADINGS, *CONTROLS)):
+    for number, row in enumerate((CONTROLS_HEADINGS, *controls)):
         draw_text(target, font, row[0], (panel.left + PANEL_PAD_PX, y), DIM_TEXT,
                   outline=None, antialias=SMALL_TEXT_ANTIALIAS)
         draw_text(target, font, row[column], (panel.right - PANEL_PAD_PX, y),
@@ -302,6 +360,25 @@ def format_seconds(seconds: float | None) -> str:
     return NOT_YET if seconds is None else f"{seconds:.2f} s"
 
 
+def level_row_values(entry: LevelEntry) -> tuple[str, str]:
+    """A level select row's best time and coins, as shown: the coins of the level's total.
+
+    >>> from pathlib import Path
+    >>> level_row_values(LevelEntry(Path("a.tmx"), "A", True, 12.5, 3, coins_total=5))
+    ('12.50 s', '3 of 5')
+    >>> level_row_values(LevelEntry(Path("b.tmx"), "B", True, coins_total=4))[1] == (
+    ...     f"{NOT_YET} of 4")
+    True
+    """
+    return format_seconds(entry.best_s), of_total(entry.best_coins, entry.coins_total)
+
+
+def draw_medal(target: pygame.Surface, center: tuple[int, int]) -> None:
+    """The medal a best time within the level's target earns: a gold disc, outlined."""
+    pygame.draw.circle(target, OUTLINE_COLOR, center, MEDAL_RADIUS_PX + 1)
+    pygame.draw.circle(target, MEDAL_COLOR, center, MEDAL_RADIUS_PX)
+
+
 def draw_level_select(target: pygame.Surface, assets: Assets, frame: int,
                       levels: Sequence[LevelEntry], selected: int) -> None:
     """The campaign's levels in order: unlocked ones bright, locked ones grey with a padlock,
@@ -322,14 +399,15 @@ def draw_level_select(target: pygame.Surface, assets: Assets, frame: int,
 
     titles_w = max((font.size(entry.title)[0] for entry in levels), default=0)
     panel = pygame.Rect(0, top, _marker_w(font) + LEVEL_NUMBER_W_PX + titles_w + COLUMN_GAP_PX
-                        + BEST_TIME_W_PX + COLUMN_GAP_PX + BEST_COINS_W_PX + 3 * PANEL_PAD_PX,
+                        + BEST_TIME_W_PX + MEDAL_W_PX + COLUMN_GAP_PX + BEST_COINS_W_PX
+                        + 3 * PANEL_PAD_PX,
                         small.get_linesize() + shown * row_h + 2 * PANEL_PAD_PX - LINE_GAP_PX)
     panel.w = min(panel.w, width - 2 * PANEL_PAD_PX)
     panel.centerx = width // 2
     draw_panel(target, panel)
     inner_left, inner_right = panel.left + PANEL_PAD_PX, panel.right - PANEL_PAD_PX
     coins_right = inner_right - PANEL_PAD_PX
-    time_right = coins_right - BEST_COINS_W_PX - COLUMN_GAP_PX
+    time_right = coins_right - BEST_COINS_W_PX - COLUMN_GAP_PX - MEDAL_W_PX
     title_left = inner_left + _marker_w(font) + LEVEL_NUMBER_W_PX
     y = panel.top + PANEL_PAD_PX
     draw_text(target, small, "Level", (title_left, y), GOLD, outline=None,
@@ -352,9 +430,10 @@ def draw_level_select(target: pygame.Surface, assets: Assets, frame: int,
                                y + font.get_height() // 2), LOCKED_TEXT)
         title = fit_text(font, entry.title, time_right - BEST_TIME_W_PX - title_left)
         draw_text(target, font, title, (title_left, y), color)
-        draw_text(target, font, format_seconds(entry.best_s), (time_right, y), color,
-                  anchor="topright")
-        coins = NOT_YET if entry.best_coins is None else str(entry.best_coins)
+        best_time, coins = level_row_values(entry)
+        draw_text(target, font, best_time, (time_right, y), color, anchor="topright")
+        if entry.medal:
+            draw_medal(target, (time_right + MEDAL_W_PX // 2 + 1, y + font.get_height() // 2))
         draw_text(target, font, coins, (coins_right, y), color, anchor="topright")
         y += row_h
     _draw_level_select_footer(target, assets, levels, selected, panel.bottom + LINE_GAP_PX)
@@ -382,7 +461,7 @@ def pause_labels(timer_on: bool) -> list[str]:
     """The pause menu's rows as shown: the timer's row says whether the timer is on.
 
     >>> pause_labels(False)
-    ['Resume', 'Restart level', 'Timer: off', 'Quit to title']
+    ['Resume', 'Restart level', 'Timer: off', 'Options', 'Quit to title']
     """
     return [f"{item}: {'on' if timer_on else 'off'}" if item == TIMER else item
             for item in PAUSE_ITEMS]
@@ -407,7 +486,9 @@ def draw_pause(target: pygame.Surface, assets: Assets, selected: int, *,
 
 
 def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign,
-                 heading: str) -> None:
+                 heading: str, choices: Sequence[str] = (), selected: int = 0) -> None:
+    """The run's figures in a panel under ``heading``, then ``choices`` as a menu with
+    ``choices[selected]`` lit, or, without choices, what to press."""
     dim(target)
     width, height = target.get_size()
     lines = (
@@ -421,9 +502,11 @@ def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign,
     line_h = font.get_linesize() + LINE_GAP_PX
     head_h = heading_h(assets)
     text_w = max(font.size(label)[0] + font.size(value)[0] for label, value in lines)
-    panel_w = max(text_w + COLUMN_GAP_PX, assets.big_font.size(heading)[0]) + 4 * PANEL_PAD_PX
+    menu_w, menu_h = menu_size(font, choices) if choices else (0, line_h)
+    panel_w = max(text_w + COLUMN_GAP_PX, menu_w,
+                  assets.big_font.size(heading)[0]) + 4 * PANEL_PAD_PX
     panel = pygame.Rect(0, 0, panel_w,
-                        head_h + len(lines) * line_h + line_h + 3 * PANEL_PAD_PX)
+                        head_h + len(lines) * line_h + menu_h + 3 * PANEL_PAD_PX)
     panel.center = (width // 2, height // 2)
     draw_panel(target, panel)
     draw_heading(target, assets, heading, (panel.centerx, panel.top + PANEL_PAD_PX))
@@ -433,22 +516,30 @@ def _draw_result(target: pygame.Surface, assets: Assets, campaign: Campaign,
         draw_text(target, font, value, (panel.right - 2 * PANEL_PAD_PX, y), TEXT_COLOR,
                   anchor="topright")
         y += line_h
+    if choices:
+        draw_menu(target, font, choices, selected, (panel.left + PANEL_PAD_PX, y + PANEL_PAD_PX),
+                  panel.w - 2 * PANEL_PAD_PX)
+        return
     draw_text(target, font, "Press Enter or A", (panel.centerx, panel.bottom - PANEL_PAD_PX),
               GOLD, anchor="midbottom")
 
 
-def draw_game_over(target: pygame.Surface, assets: Assets, campaign: Campaign) -> None:
-    """Dim the last frame and show the final score, coins and deaths."""
-    _draw_result(target, assets, campaign, "Game Over")
+def draw_game_over(target: pygame.Surface, assets: Assets, campaign: Campaign,
+                   selected: int = 0) -> None:
+    """Dim the last frame and show the final score, coins and deaths, and the choice to
+    retry the level lost or go back to the title (``GAME_OVER_ITEMS[selected]`` lit)."""
+    _draw_result(target, assets, campaign, "Game Over", GAME_OVER_ITEMS, selected)
 
 
 WIN_HEADINGS = ("Level", "Time", "Coins", "Stomps")
+ASSIST_MARK = " (assist)"  # after the title of a level played with an assist on
 
 
 def win_rows(campaign: Campaign) -> list[tuple[str, str, str, str]]:
     """The win screen's table: one row per level finished, then the campaign's total."""
-    rows = [(r.title, format_seconds(r.ticks * TICK_S), f"{r.coins}/{r.coins_total}",
-             f"{r.stomps}/{r.enemies_total}") for r in campaign.results]
+    rows = [(f"{r.title}{ASSIST_MARK if r.assisted else ''}", format_seconds(r.ticks * TICK_S),
+             f"{r.coins}/{r.coins_total}", f"{r.stomps}/{r.enemies_total}")
+            for r in campaign.results]
     ticks, coins, coins_total, stomps, _score = totals(campaign.results)
     enemies = sum(r.enemies_total for r in campaign.results)
     rows.append(("Total", format_seconds(ticks * TICK_S), f"{coins}/{coins_total}",
@@ -486,6 +577,46 @@ def draw_win(target: pygame.Surface, assets: Assets, campaign: Campaign) -> None
     draw_text(target, font, footer, (box.centerx, y), TEXT_COLOR, anchor="midtop")
     draw_text(target, font, "Press Enter or A", (box.centerx, box.bottom - PANEL_PAD_PX),
               GOLD, anchor="midbottom")
+
+
+def credits_lines(font: pygame.font.Font, width: int) -> list[tuple[str, Color, int]]:
+    """The credits roll as lines of (text, colour, gap before it), each at most ``width``."""
+    lines: list[tuple[str, Color, int]] = []
+    for role, who in CREDITS:
+        lines.append((role, GOLD, CREDITS_ROLE_GAP_PX if lines else 0))
+        lines.extend((line, TEXT_COLOR, 0) for line in wrap_text(font, who, width))
+    lines.append((CREDITS_LAST, HIGHLIGHT_TEXT, 2 * CREDITS_ROLE_GAP_PX))
+    return lines
+
+
+def draw_credits(target: pygame.Surface, assets: Assets, frame: int) -> None:
+    """The credits after the win: over the title's drifting sky and running hero, the lines
+    roll up from the bottom at :data:`CREDITS_SCROLL_PX_S` and stop when the thanks reach
+    :data:`CREDITS_STOP_ROW_PX`. ``frame`` counts from when the credits came up, at
+    :data:`game.sim.sprite.ANIMATION_HZ` per second."""
+    _draw_sky(target, assets, frame)
+    dim(target)
+    width, height = target.get_size()
+    font = assets.font
+    line_h = font.get_linesize() + LINE_GAP_PX
+    lines = credits_lines(font, width - 4 * PANEL_PAD_PX)
+    roll_h = sum(line_h + gap for _, _, gap in lines) - line_h  # to the last line's top
+    risen = math.floor(frame * CREDITS_SCROLL_PX_S / ANIMATION_HZ)
+    bottom = height - CREDITS_BOTTOM_GAP_PX
+    y = max(bottom - risen, CREDITS_STOP_ROW_PX - roll_h)
+    clip = target.get_clip()
+    target.set_clip(pygame.Rect(0, CREDITS_TOP_PX, width, bottom - CREDITS_TOP_PX))
+    for text, color, gap in lines:
+        y += gap
+        if CREDITS_TOP_PX - line_h < y < bottom:
+            draw_text(target, font, text, (width // 2, y), color, anchor="midtop")
+        y += line_h
+    if y - line_h <= CREDITS_STOP_ROW_PX:  # the roll has stopped: say how to leave
+        draw_text(target, font, "Press Enter or A", (width // 2, y + line_h), GOLD,
+                  anchor="midtop")
+    target.set_clip(clip)
+    draw_heading(target, assets, "Credits", (width // 2, HEADING_RULE_GAP_PX))
+    _draw_runners(target, assets, frame)
 
 
 def wrap_text(font: pygame.font.Font, text: str, max_w: int) -> list[str]:

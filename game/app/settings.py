@@ -1,4 +1,5 @@
-"""The player's choices: volumes, fullscreen, the HUD's timer, and which keys and buttons do what.
+"""The player's choices: volumes, fullscreen, the HUD's timer, the ghost, the assists, and
+which keys and buttons do what.
 
 Where it sits: read once by the app before the window opens, written when the player changes
 something. It lives as ``settings.json`` in the data folder beside the progress, and is read
@@ -52,6 +53,8 @@ SETTINGS_VERSION = 1  # written into the file; bump it if its layout ever change
 DEFAULT_EFFECTS_VOLUME = 0.8  # 0 is mute, 1 is full
 DEFAULT_MUSIC_VOLUME = 0.5  # quieter than the effects, which carry the game's feedback
 DEFAULT_FULLSCREEN = False
+GAME_SPEEDS = (50, 60, 70, 80, 90, 100)  # the assist's game speeds, in % of real time
+DEFAULT_GAME_SPEED = 100  # %: the game as it is meant to be played
 DEFAULT_KEYS: dict[str, tuple[str, ...]] = {  # action name -> pygame key names
     Action.LEFT.value: ("left", "a"),
     Action.RIGHT.value: ("right", "d"),
@@ -114,6 +117,9 @@ class Settings:
     fullscreen: bool = DEFAULT_FULLSCREEN
     screen_shake: bool = True  # a stomp shakes the picture (game.app.effects); false: never
     hud_timer: bool = True  # the HUD shows the level's time (the pause menu's Timer row)
+    ghost: bool = True  # the best run of the level in play is replayed beside the player
+    game_speed: int = DEFAULT_GAME_SPEED  # an assist: % of real time the game plays at
+    no_damage: bool = False  # an assist: enemies and spikes never hurt
     keys: dict[str, list[str]] = field(default_factory=_default_keys)  # action -> key names
     buttons: dict[str, list[int]] = field(default_factory=_default_buttons)  # action -> numbers
 
@@ -135,7 +141,31 @@ class Settings:
         return {"version": SETTINGS_VERSION, "effects_volume": self.effects_volume,
                 "music_volume": self.music_volume, "fullscreen": self.fullscreen,
                 "screen_shake": self.screen_shake, "hud_timer": self.hud_timer,
-                "keys": self.keys, "buttons": self.buttons}
+                "ghost": self.ghost, "game_speed": self.game_speed,
+                "no_damage": self.no_damage, "keys": self.keys, "buttons": self.buttons}
+
+    @property
+    def assisted(self) -> bool:
+        """An assist is on: a finish then sets no best time and leaves no ghost."""
+        return self.no_damage or self.game_speed < DEFAULT_GAME_SPEED
+
+    def rebind(self, action: str, name: str) -> str | None:
+        """Bind ``action`` to the one key ``name`` (taken off the actions it may not share
+        with); None when done, else why not (the bindings are then unchanged).
+
+        >>> settings = Settings()
+        >>> settings.rebind("jump", "x"), settings.keys["jump"]
+        (None, ['x'])
+        >>> settings.rebind("left", "d")
+        "'d' is bound to both left and right, which cannot work together"
+        """
+        keys = {other: list(names) for other, names in self.keys.items()}
+        keys[action] = [name]
+        clash = _clash(keys)
+        if clash is not None:
+            return clash
+        self.keys = keys
+        return None
 
     @classmethod
     def from_json(cls, data: Any) -> tuple[Settings, list[str]]:
@@ -152,7 +182,15 @@ class Settings:
                 else:
                     problems.append(f"{name} is {quoted(value)}, not a number from 0 to 1 "
                                     f"(using {getattr(settings, name)})")
-        for name in ("fullscreen", "screen_shake", "hud_timer"):
+        if "game_speed" in data:
+            speed = data["game_speed"]
+            if _is_number(speed) and speed in GAME_SPEEDS:
+                settings.game_speed = int(speed)
+            else:
+                problems.append(f"game_speed is {quoted(speed)}, not one of "
+                                f"{', '.join(map(str, GAME_SPEEDS))} (using "
+                                f"{settings.game_speed})")
+        for name in ("fullscreen", "screen_shake", "hud_timer", "ghost", "no_damage"):
             if name not in data:
                 continue
             if isinstance(data[name], bool):

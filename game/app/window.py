@@ -7,13 +7,19 @@ feeds and obeys); how pads become actions and menu moves is in :mod:`game.app.ga
 
 The loop is :class:`GameWindow`: what lasts between frames, and one short method per phase of
 a frame, called in order by :meth:`GameWindow.play`: events, reload on save (``--watch``),
-music, ticks, the level-end banner, draw.
+music (the title's track in the menus, the place's in play, a jingle when the run ends),
+ticks, the level-end banner, draw.
 
-Screens: the title (Play, Level select, Quit), the level select, playing, paused (Esc, P or
-Start; Resume, Restart level, Quit to title), game over and won (Enter or A returns to the
-title). Arrows, W/S, the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B
+Screens: the title (Play, Level select, Options, Quit), the level select, the options
+(:mod:`game.app.options`: applied at once and saved), playing, paused (Esc, P or Start;
+Resume, Restart level, Timer, Options, Quit to title), game over (Retry this level, Quit to
+title) and won (Enter or A rolls the credits, and Enter or A again returns to the title).
+While a level is played, its ghost (:mod:`game.app.ghosts`) is stepped beside it, one tick
+for each of the player's, and a best run without an assist becomes the ghost.
+Arrows, W/S, the d-pad or the stick move in menus; Enter, Space or A choose; Esc or B
 go back. A scripted run (``--inputs``) or one given ``--level`` skips the title; a scripted
-run ends at the end of the run, like a headless one.
+run ends at the end of the run, like a headless one (without ``--ticks``, when the script's
+level ends, unless ``--go-on``).
 
 The window opens at the largest whole-number scale of the 320x180 screen that takes at most
 :data:`DESKTOP_SHARE_PERCENT` of the desktop each way (room for a title bar and a taskbar),
@@ -30,20 +36,24 @@ import pygame
 from pygame._sdl2.video import WINDOWPOS_CENTERED, Window
 
 from game.app.assets import Assets, load_assets
-from game.app.audio import Audio
+from game.app.audio import TITLE_TRACK, Audio
 from game.app.banner import Banner
 from game.app.debug_overlay import PANEL_KEY, PanelMode
 from game.app.effects import Effects
 from game.app.frame import render_frame
 from game.app.gamepad import Gamepads, StickEdges, pad_in_use, pad_nav
+from game.app.ghosts import Replay, load_replay, recorded, save_ghost
 from game.app.menus import (
+    ChangeOption,
     Command,
     HeldOver,
     LevelEntry,
     Menus,
     Nav,
     QuitGame,
+    RebindKey,
     RestartLevel,
+    RetryLevel,
     Screen,
     StartLevel,
     ToggleTimer,
@@ -54,11 +64,15 @@ from game.app.menus import (
     level_entries,
     press,
 )
+from game.app.options import change
+from game.app.options_screen import draw_options
+from game.app.places import place_of
 from game.app.render import WorldRenderer
 from game.app.run import EXIT_OK, TARGET_FPS, Run, held_keys
-from game.app.saves import Attempt, CampaignMaps, Progress, progress_file
+from game.app.saves import Attempt, CampaignMaps, Finish, Progress, progress_file
 from game.app.screens import (
     RELOAD_FAILED,
+    draw_credits,
     draw_error_banner,
     draw_game_over,
     draw_level_select,
@@ -66,7 +80,7 @@ from game.app.screens import (
     draw_title,
     draw_win,
 )
-from game.app.settings import Settings, settings_file
+from game.app.settings import DEFAULT_GAME_SPEED, Settings, key_name, settings_file
 from game.app.stepping import TickControl
 from game.app.watch import FileWatcher
 from game.levels import FIRST_LEVEL, LevelError
@@ -75,12 +89,14 @@ from game.sim.campaign import Campaign, Outcome
 from game.sim.fixed_step import FixedStep
 from game.sim.inputs import Actions
 from game.sim.sprite import ANIMATION_HZ
+from game.sim.world import World
 
-MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT)  # drawn instead of the world
+MENU_SCREENS = (Screen.TITLE, Screen.LEVEL_SELECT, Screen.OPTIONS, Screen.CREDITS)  # not the world
 STILL_SCREENS = (Screen.PAUSED, Screen.ENDED)  # nothing on them moves by itself
 MENU_FPS = 30  # the title and the level select animate at this rate: smooth, half the work
 STILL_FPS = 10  # a still screen only waits for input, so it looks for it this often
 DESKTOP_SHARE_PERCENT = 90  # the window takes at most this much of the desktop each way
+NOT_REBOUND = "Not rebound: "  # before the reason a key chosen on the options is refused
 
 
 def frame_rate(screen: Screen) -> int:
@@ -162,28 +178,40 @@ class GameWindow:
         self.audio.set_volume(self.settings.effects_volume, self.settings.music_volume)
         self.pads, self.stick_edges, self.held_over = Gamepads(), StickEdges(), HeldOver()
         self.using_pad = False  # the title shows the controls of the device last pressed
-        self.levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks, bests each frame
+        self.levels = campaign_levels(FIRST_LEVEL)  # titles read once; locks, bests each menu frame
         self.campaign_maps = CampaignMaps.of(info.path for info in self.levels)  # saved maps
         self.entries = level_entries(self.levels, self.progress)
         self.attempt = Attempt()
         self.banner: Banner | None = None
+        self.rebinding: str | None = None  # the action whose new key the next press sets
+        self.replay: Replay | None = None  # the ghost of the level in play, if it has one
+        self.replay_world: World | None = None  # the world the ghost was set up for
         self.dirty = True  # a still screen is drawn again after any event (see draw)
         self.last_shown: tuple[Menus, str | None, str | None, bool, PanelMode] | None = None
+        self.credits_from = 0  # self.frame when the credits came up: they roll from there
 
     def play(self) -> int:
         """Run frames until the window closes or a scripted run ends; the exit status."""
-        while True:
-            frame_s = self.clock.tick(frame_rate(self.menus.screen)) / 1000.0
-            self.frame += max(1, round(frame_s * ANIMATION_HZ))  # animations keep time at any rate
+        while (status := self.one_frame()) is None:
+            pass
+        return status
+
+    def one_frame(self) -> int | None:
+        """Wait for the frame's time, then run its phases in order; the exit status if the
+        frame ends the game (``python -m game.bench.window`` times this call)."""
+        frame_s = self.clock.tick(frame_rate(self.menus.screen)) / 1000.0
+        self.frame += max(1, round(frame_s * ANIMATION_HZ))  # animations keep time at any rate
+        if self.menus.screen is not Screen.PLAYING:  # play reads no row of the level select
             self.entries = level_entries(self.levels, self.progress)
-            if (status := self.events()) is not None:
-                return status
-            self.reload_on_save()
-            self.music()
-            if (status := self.ticks(frame_s)) is not None:
-                return status
-            self.advance_banner(frame_s)
-            self.draw()
+        if (status := self.events()) is not None:
+            return status
+        self.reload_on_save()
+        self.music()
+        if (status := self.ticks(frame_s)) is not None:
+            return status
+        self.advance_banner(frame_s)
+        self.draw()
+        return None
 
     def held(self) -> Actions:
         """What the keyboard and the pads hold right now."""
@@ -211,7 +239,9 @@ class GameWindow:
                 return self.quit()
             self.pads.handle(event)
             self.using_pad = pad_in_use(event, self.using_pad)
-            if event.type == pygame.KEYDOWN and event.key == pygame.K_F1:
+            if event.type == pygame.KEYDOWN and self.rebinding is not None:
+                self.rebind(event.key)
+            elif event.type == pygame.KEYDOWN and event.key == pygame.K_F1:
                 self.debug = not self.debug
                 self.run.campaign.measure.queries = self.debug  # the overlay draws the query log
             elif event.type == pygame.KEYDOWN and self.debug and event.key == PANEL_KEY:
@@ -230,10 +260,44 @@ class GameWindow:
 
     def toggle_fullscreen(self) -> None:
         """F11: fill the screen, or go back to the scaled, centred window; remembered."""
-        pygame.display.toggle_fullscreen()
         self.settings.fullscreen = not self.settings.fullscreen
+        self.show_fullscreen()
+        self.save_settings()
+
+    def show_fullscreen(self) -> None:
+        """Make the window match the fullscreen setting."""
+        pygame.display.toggle_fullscreen()
         if not self.settings.fullscreen:
             fit_window(self.window)
+
+    def change_option(self, command: ChangeOption) -> None:
+        """A press on an options row: change the setting, apply it at once, and save."""
+        before, self.settings = self.settings, change(self.settings, command.item,
+                                                      command.step)
+        self.audio.set_volume(self.settings.effects_volume, self.settings.music_volume)
+        if self.settings.fullscreen != before.fullscreen:
+            self.show_fullscreen()
+        self.apply_assist()
+        self.save_settings()
+
+    def apply_assist(self) -> None:
+        """Tell the campaign which assists are on (it marks the level it is playing)."""
+        self.run.campaign.set_assist(
+            no_damage=self.settings.no_damage,
+            slowed=self.settings.game_speed < DEFAULT_GAME_SPEED)
+
+    def rebind(self, key: int) -> None:
+        """The key pressed after choosing a key row: bind it (Esc keeps the old keys)."""
+        action, self.rebinding = self.rebinding, None
+        if action is None or key == pygame.K_ESCAPE:
+            return
+        problem = self.settings.rebind(action, key_name(key))
+        if problem is not None:
+            self.notice = f"{NOT_REBOUND}{problem}."
+            return
+        if self.notice is not None and self.notice.startswith(NOT_REBOUND):
+            self.notice = None  # the last refusal is answered
+        self.keys = self.settings.key_codes()
         self.save_settings()
 
     def menu_press(self, nav: Nav) -> bool:
@@ -247,10 +311,16 @@ class GameWindow:
         if isinstance(command, ToggleTimer):
             self.settings.hud_timer = not self.settings.hud_timer
             self.save_settings()
+        elif isinstance(command, ChangeOption):
+            self.change_option(command)
+        elif isinstance(command, RebindKey):
+            self.rebinding = command.action
         elif command is not None and (problem := _obey(command, self.run)) is not None:
             self.menus, self.notice = before, problem  # stay on the menu and say why
         if self.menus.screen is Screen.PLAYING and before.screen is not Screen.PLAYING:
             self.held_over.begin(self.held())
+        if self.menus.screen is Screen.CREDITS and before.screen is not Screen.CREDITS:
+            self.credits_from = self.frame
         return False
 
     def reload_on_save(self) -> None:
@@ -269,11 +339,18 @@ class GameWindow:
                 self.reload_error = str(error)
 
     def music(self) -> None:
-        """Music plays while playing, holds its place while paused, stops elsewhere."""
-        if self.menus.screen is Screen.PLAYING:
-            self.audio.start_music()
-        elif self.menus.screen is Screen.PAUSED:
+        """The place's music plays while playing and holds its place while paused (and on the
+        options screen opened from the pause menu); the title's plays in the menus and the
+        credits; none under the level-end banner or an ending (whose jingle plays as it comes
+        up, :meth:`end_run`)."""
+        screen = self.menus.screen
+        if screen is Screen.PLAYING:
+            self.audio.start_music(place_of(self.run.campaign.world.level.properties).name)
+        elif screen is Screen.PAUSED or (screen is Screen.OPTIONS and
+                                         self.menus.options_from is Screen.PAUSED):
             self.audio.pause_music()
+        elif screen in MENU_SCREENS:
+            self.audio.start_music(TITLE_TRACK)
         else:
             self.audio.stop_music()
 
@@ -286,7 +363,10 @@ class GameWindow:
         if self.menus.screen is not Screen.PLAYING or self.banner is not None:
             self.stepper.advance(0.0)
             return None
-        due = self.stepping.ticks_due(self.stepper, frame_s, overlay_on=self.debug)
+        self.apply_assist()  # the game speed assist: real time pays for fewer ticks
+        due = self.stepping.ticks_due(
+            self.stepper, frame_s * self.settings.game_speed / DEFAULT_GAME_SPEED,
+            overlay_on=self.debug)
         # Effects age in game time, by the ticks this frame runs: they stand still in
         # menus and while frozen (F2), and slow down at quarter speed (F4), as sprites do.
         self.effects.advance(due * self.stepper.tick_s)
@@ -303,8 +383,15 @@ class GameWindow:
         if self.banner is not None:
             self.menus = cleared(self.menus)
         elif run.finished():
-            self.menus = ended(self.menus)
+            self.end_run()
         return None
+
+    def end_run(self) -> None:
+        """The run is over: its ending comes up (the win, or game over), with its jingle."""
+        won = self.run.campaign.outcome is Outcome.WON
+        self.menus = ended(self.menus, won=won)
+        self.audio.stop_music()
+        self.audio.play("win" if won else "game-over")
 
     def tick(self) -> bool:
         """One tick with what is held; False when no more ticks should run this frame (the
@@ -312,23 +399,48 @@ class GameWindow:
         run = self.run
         self.attempt.before_tick(run.campaign)
         finishing = run.campaign.world
+        self.follow_ghost(finishing)
         try:
-            events = run.tick(self.held_over.filter(self.held()))
+            held = self.held_over.filter(self.held())
+            events = run.tick(held)
             self.effects.observe(finishing, events)
         except LevelError as error:  # the next level will not load: say so, go back
             self.menus, self.notice = Menus(), str(error)
             return False
         for tick_event in events:
             self.audio.play(tick_event.kind)
-        finish = self.attempt.after_tick(run.campaign, events)
+        if self.replay is not None:
+            self.replay.step()
+        finish = self.attempt.after_tick(run.campaign, events, held)
         if finish is not None:
-            kept = self.campaign_maps.kept(finish, finishing.level)  # None: not the campaign's
-            best = None if kept is None else self.progress.best_ticks.get(finish.level)
-            self.banner = Banner(run.campaign.results[-1], best, world=finishing)
-            if kept is not None:
-                self.progress.record(kept)
-                self.save_progress()
+            self.keep_finish(finish, finishing)
         return not (run.finished() or finish is not None)
+
+    def keep_finish(self, finish: Finish, finishing: World) -> None:
+        """Show a finished level's banner; keep a finish of the campaign's own maps in the
+        progress, and a best time without an assist as the level's ghost."""
+        kept = self.campaign_maps.kept(finish, finishing.level)  # None: not the campaign's
+        best = None if kept is None else self.progress.best_ticks.get(finish.level)
+        self.banner = Banner(self.run.campaign.results[-1], best, world=finishing)
+        if kept is None:
+            return
+        self.progress.record(kept)
+        self.save_progress()
+        faster = best is None or finish.ticks < best
+        if self.personal and faster and not finish.assisted:
+            ghost = recorded(self.attempt.inputs, finish.ticks, finishing.level.path)
+            if ghost is not None:
+                self.notice = save_ghost(ghost, finish.level) or self.notice
+
+    def follow_ghost(self, world: World) -> None:
+        """A level started (or started again): set up its ghost, if the player wants it and
+        the level has one made on this map."""
+        if world is self.replay_world:
+            return
+        self.replay_world, self.replay = world, None
+        if self.settings.ghost and self.personal and self.campaign_maps.holds(world.level.path):
+            self.replay, problem = load_replay(world.level, self.run.campaign.tuning)
+            self.notice = problem or self.notice
 
     # The level-end banner: a pause of the window only; the simulation waits for it.
     def advance_banner(self, frame_s: float) -> None:
@@ -342,7 +454,7 @@ class GameWindow:
             if self.menus.screen is Screen.CLEARED:
                 self.menus = replace(self.menus, screen=Screen.PLAYING)
             if self.run.finished():
-                self.menus = ended(self.menus)
+                self.end_run()
             elif self.menus.screen is Screen.PLAYING:
                 self.held_over.begin(self.held())
 
@@ -364,16 +476,26 @@ class GameWindow:
                          update_ms=self.run.last_update_ms,
                          world=self.banner.world if self.banner is not None else None,
                          debug_lines=self.stepping.lines(campaign.ticks), panel=self.panel,
-                         timer=self.settings.hud_timer)
+                         timer=self.settings.hud_timer, ghost=self.ghost_shown())
         if self.banner is not None:
             self.banner.draw(target, self.assets)
-        _draw_screen(target, self.assets, self.menus, self.entries, campaign, self.frame,
-                     self.using_pad, self.settings.hud_timer)
+        if self.menus.screen is Screen.OPTIONS:
+            draw_options(target, self.assets, self.frame, self.settings,
+                         self.menus.options_item, self.rebinding)
+        frame = self.frame - (self.credits_from if self.menus.screen is Screen.CREDITS else 0)
+        _draw_screen(target, self.assets, self.menus, self.entries, campaign, frame,
+                     self.using_pad, self.settings.hud_timer, self.settings.keys)
         if self.reload_error is not None:
             draw_error_banner(target, self.assets, RELOAD_FAILED + self.reload_error)
         elif self.notice is not None and self.menus.screen is not Screen.PLAYING:
             draw_error_banner(target, self.assets, self.notice)
         pygame.display.flip()
+
+
+    def ghost_shown(self) -> Replay | None:
+        """The ghost to draw: the level in play's, when the ghost is on (not under a banner)."""
+        on = self.settings.ghost and self.banner is None
+        return self.replay if on and self.replay_world is self.run.campaign.world else None
 
 
 def play_in_window(run: Run) -> int:
@@ -393,6 +515,8 @@ def _obey(command: Command, run: Run) -> str | None:
             run.campaign = Campaign(command.level, run.campaign.tuning, loader=run.campaign.loader)
         elif isinstance(command, RestartLevel):
             run.campaign.restart_level()
+        elif isinstance(command, RetryLevel):
+            run.campaign.retry_level()
     except LevelError as error:
         return str(error)
     return None
@@ -400,10 +524,10 @@ def _obey(command: Command, run: Run) -> str | None:
 
 def _draw_screen(target: pygame.Surface, assets: Assets, menus: Menus,
                  entries: tuple[LevelEntry, ...], campaign: Campaign, frame: int,
-                 using_pad: bool, timer_on: bool) -> None:
+                 using_pad: bool, timer_on: bool, keys: dict[str, list[str]]) -> None:
     """The screen that is up: a menu in place of the world, or over it."""
     if menus.screen is Screen.TITLE:
-        draw_title(target, assets, frame, menus.title_item, entries, pad=using_pad)
+        draw_title(target, assets, frame, menus.title_item, entries, pad=using_pad, keys=keys)
     elif menus.screen is Screen.LEVEL_SELECT:
         draw_level_select(target, assets, frame, entries, menus.level_item)
     elif menus.screen is Screen.PAUSED:
@@ -412,5 +536,7 @@ def _draw_screen(target: pygame.Surface, assets: Assets, menus: Menus,
         if campaign.outcome is Outcome.WON:
             draw_win(target, assets, campaign)
         else:
-            draw_game_over(target, assets, campaign)
+            draw_game_over(target, assets, campaign, menus.game_over_item)
+    elif menus.screen is Screen.CREDITS:
+        draw_credits(target, assets, frame)
 

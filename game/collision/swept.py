@@ -5,7 +5,7 @@ it.** They are :mod:`game.collision.axis_sweep`, the same idea one axis at a tim
 the tile grid; this module does it for a whole ``(dx, dy)`` move against one box, with the
 cheaper methods it replaces set beside it for comparison. The level checker runs
 :func:`sweep` to find where a moving platform's path first meets a wall
-(:mod:`game.levels.designer_checks`).
+(:mod:`game.checker.designer_checks`).
 
 What it teaches:
   * **Time of impact by slabs.** On each axis the two boxes' intervals overlap during an

@@ -46,6 +46,7 @@ MAX_FALL_SPEED_PX_S = (100.0, 10_000.0)  # a slow drift down to 10 tiles of 16 p
 RUN_SPEED_PX_S = (10.0, 10_000.0)  # a tile in 1.6 s up to 10 tiles of 16 px a tick
 JUMP_SPEED_PX_S = (0.0, 1_000.0)  # no jump at all up to 3.4 times the default
 MAX_COIN_VALUE = 1_000_000
+TARGET_SECONDS = (0.0, 86_400.0)  # a level's target time, in s: 0 is none, at most a day
 # The places a level can be set in (the map property ``setting``); game.app.places draws them.
 SETTINGS = ("meadow", "cliffs", "forest", "caves", "dusk", "summit")
 DEFAULT_SETTING = SETTINGS[0]
@@ -177,6 +178,9 @@ def classes_for(tuning: Tuning) -> tuple[TiledClass, ...]:
                     Member("setting", "string", DEFAULT_SETTING,
                            "where the level is set: its sky, scenery and ground",
                            choices=SETTINGS),
+                    Member("target_seconds", "float", 0.0,
+                           "the target time in s: a finish within it earns a medal; 0 is none",
+                           *TARGET_SECONDS),
                     speed("gravity", tuning.gravity_px_s2, "downward pull in px/s²",
                           GRAVITY_PX_S2),
                     speed("max_fall_speed", tuning.max_fall_speed_px_s,

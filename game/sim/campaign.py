@@ -2,11 +2,17 @@
 
 Where it sits: above :class:`game.sim.world.World`. The world says what happened in a tick
 (coins, stomps, hurts, the exit); the campaign keeps the score and decides what follows:
-the next level (the map property ``next_level``), the win, or game over.
+the next level (the map property ``next_level``), the win, or game over. A campaign told
+to play a number of levels (``levels_to_play``) is won when it has finished that many, and
+loads no level after them.
 
 The score: each coin adds its ``value``, each stomp adds ``Tuning.stomp_points``. Each finished
 level leaves a :class:`LevelResult` (its time, coins of its total, stomps) in
 ``Campaign.results``, for the level-end banner and the win screen to show.
+
+The assists (``no_damage``, and ``slowed``, which the app sets when it plays the game slower
+than real time) are the player's to turn on; a level played with one on at any time is
+marked ``assisted`` in its result, and the app keeps no best time of it.
 """
 
 from __future__ import annotations
@@ -44,6 +50,7 @@ class LevelResult:
     stomps: int
     enemies_total: int
     score: int  # points scored in this level
+    assisted: bool = False  # an assist was on at some time in the level (no best time then)
 
 
 def totals(results: list[LevelResult]) -> tuple[int, int, int, int, int]:
@@ -62,13 +69,17 @@ class Campaign:
     """Plays levels in order from ``first_level`` until the last exit or the last life."""
 
     def __init__(self, first_level: Path, tuning: Tuning | None = None, *,
-                 loader: LevelLoader, measure: Measure | None = None) -> None:
+                 loader: LevelLoader, measure: Measure | None = None,
+                 no_damage: bool = False, levels_to_play: int | None = None) -> None:
         self.tuning = tuning or Tuning()
+        self.levels_to_play = levels_to_play  # None: every level next_level leads on to
         self.loader = loader
         # What every level's world writes down beyond the game (shared: turning the overlay's
         # query log on or off reaches the level in play and every level after it).
         self.measure = measure or Measure()
-        self.world = World(loader(first_level), self.tuning, measure=self.measure)
+        self.no_damage = no_damage  # the assist every level's world plays with
+        self.slowed = False  # the app plays the game slower than real time (an assist)
+        self.world = self._world(loader(first_level))
         self.outcome = Outcome.RUNNING
         self.ticks = 0
         self.lives = self.tuning.start_lives
@@ -82,10 +93,26 @@ class Campaign:
         self.results: list[LevelResult] = []  # one per level finished, in order
         self._begin_level()
 
+    def _world(self, level: Level) -> World:
+        return World(level, self.tuning, measure=self.measure, no_damage=self.no_damage)
+
     def _begin_level(self) -> None:
         """Start counting the level now in ``self.world`` afresh."""
         self.level_started_tick = self.ticks
         self.level_coins = self.level_stomps = self.level_score = 0
+        self.level_assisted = self.assisted
+
+    @property
+    def assisted(self) -> bool:
+        """An assist is on now: no damage, or the game played slower."""
+        return self.no_damage or self.slowed
+
+    def set_assist(self, *, no_damage: bool, slowed: bool) -> None:
+        """Turn the assists on or off, from the next tick; a level played with one on at
+        any time is marked assisted in its result."""
+        self.no_damage, self.slowed = no_damage, slowed
+        self.world.no_damage = no_damage
+        self.level_assisted = self.level_assisted or self.assisted
 
     def tick(self, held: Actions) -> list[Event]:
         """Advance one tick; does nothing once the run has been won or lost."""
@@ -103,9 +130,9 @@ class Campaign:
                 self.enemies_stomped += 1
                 self.level_stomps += 1
                 self._add_points(self.tuning.stomp_points)
-            elif event.kind is EventKind.HURT:
+            elif event.kind is EventKind.HURT and event.value:  # no damage: a free respawn
                 self.deaths += 1
-                self.lives -= 1
+                self.lives -= event.value
                 if self.lives <= 0:
                     self.outcome = Outcome.GAME_OVER
             elif event.kind is EventKind.EXIT:
@@ -122,12 +149,13 @@ class Campaign:
         level = self.world.level
         self.results.append(LevelResult(
             level.path, level.title, self.ticks - self.level_started_tick, self.level_coins,
-            len(level.coins), self.level_stomps, len(level.enemies), self.level_score))
+            len(level.coins), self.level_stomps, len(level.enemies), self.level_score,
+            self.level_assisted))
         next_level = level.next_level
-        if next_level is None:
+        if next_level is None or self.levels_completed == self.levels_to_play:
             self.outcome = Outcome.WON
         else:
-            self.world = World(self.loader(next_level), self.tuning, measure=self.measure)
+            self.world = self._world(self.loader(next_level))
             self._begin_level()
 
     def reload(self, level: Level) -> None:
@@ -139,7 +167,7 @@ class Campaign:
         """
         old = self.world.player
         self._take_back_level()
-        self.world = World(level, self.tuning, measure=self.measure)
+        self.world = self._world(level)
         player = self.world.player
         if (penetration_depth(self.world.solids, old.box) == 0.0
                 and old.box.top < level.grid.height_px):
@@ -151,8 +179,16 @@ class Campaign:
         """Start the current level again from its spawn (the pause menu's Restart), with its
         coins and enemies all back, and what it had counted so far taken back."""
         self._take_back_level()
-        self.world = World(self.world.level, self.tuning, measure=self.measure)
+        self.world = self._world(self.world.level)
         self._begin_level()
+
+    def retry_level(self) -> None:
+        """After game over: the level lost starts again from its spawn, as
+        :meth:`restart_level` does, with the lives a run starts with. The deaths and the
+        levels finished before it stay counted."""
+        self.restart_level()
+        self.lives = self.tuning.start_lives
+        self.outcome = Outcome.RUNNING
 
     def _take_back_level(self) -> None:
         """Take the current level's coins, stomps and points out of the run's totals (its

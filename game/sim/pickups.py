@@ -6,7 +6,8 @@ player swept this tick crosses its float ``box`` (its ``rect`` is only the pictu
 and checkpoints go through the contact tracker, which reports when a touch starts.
 
 Each is a :class:`~game.sim.sprite.BoxSprite`: a coin spins, its picture centred on its box;
-an exit or checkpoint is a flag standing on the bottom of its box, greyed until reached.
+an exit is a flag and a checkpoint a lantern (unlit until reached), each standing on the
+bottom of its box.
 
 Triggers never move, so the tile cells they lie in are found once (:class:`TriggerCells`),
 and a tick tests the player's path against them only when that path reaches one of those
@@ -33,7 +34,7 @@ from game.sim.sprite import Anchor, BoxSprite, Strip, animation_index
 COIN_SPIN_FPS = 8  # spin frames per second
 COIN_PHASE_COL_PX = 16  # neighbouring coins (by 16 px column) are one spin frame apart
 
-CHECKPOINT_WAITING_FRAME = 0  # a checkpoint's strip: greyed, then reached
+CHECKPOINT_WAITING_FRAME = 0  # a checkpoint's strip: unlit, then lit (reached)
 CHECKPOINT_REACHED_FRAME = 1
 
 

@@ -1,7 +1,7 @@
 """Snapshots of a world in play: save the state of a tick, step on, and come back to it.
 
 Where it sits: beside :class:`game.sim.world.World`, for code that tries futures and keeps
-the good ones (the level solver of :mod:`game.levels.solver`). Play never needs it.
+the good ones (the level solver of :mod:`game.checker.solver`). Play never needs it.
 
 What it teaches: the state of a simulation is its *mutable attributes*, nothing more. A
 snapshot copies, for the world and every object that may change during a tick (every

@@ -27,7 +27,8 @@ comments in :meth:`World.step` and the README's tour name the same steps in the 
    spikes, for as long as they are touched.
 9. **The void and the crush**: falling below the map, or being pushed into a wall by a
    platform, costs a life, and so does any touch of an enemy that is not a stomp: the player
-   respawns at the checkpoint counted last, else the spawn.
+   respawns at the checkpoint counted last, else the spawn. (With the ``no_damage``
+   assist no touch hurts, and a fall or a crush respawns the player without a life lost.)
 10. **Camera**: follows the player.
 
 Before step 1 a squashed enemy's time on screen counts down; after step 9, when a report
@@ -134,6 +135,7 @@ class World:
     tuning: Tuning = field(default_factory=Tuning)
     camera: Camera = field(default_factory=Camera)
     measure: Measure = field(default_factory=Measure)
+    no_damage: bool = False  # the assist: enemies and spikes never hurt, a fall costs no life
 
     def __post_init__(self) -> None:
         self.tuning = self.tuning.with_map_properties(self.level.properties)
@@ -338,14 +340,18 @@ class World:
 
     def _lose_lives(self, hurt: bool, events: list[Event]) -> None:
         """Step 9: falling below the map, or being pushed into a wall by a platform, costs a
-        life (and removes an enemy). A respawn leaves no path behind."""
+        life (and removes an enemy). A respawn leaves no path behind. With ``no_damage``
+        (an assist) only a fall or a crush respawns the player, and it costs no life."""
+        if self.no_damage:  # the assist: no touch hurts; a fall or a crush still respawns
+            hurt = False
         if self.player.box.y >= self.map_h_px or self.player.crushed:
             hurt = True
         for enemy in self.enemies:  # a stomped one is out of play already
             if enemy.box.y >= self.map_h_px or enemy.crushed:
                 enemy.kill()
         if hurt and not any(e.kind is EventKind.EXIT for e in events):
-            events.append(Event(EventKind.HURT, 1, self.player.box))
+            lives = 0 if self.no_damage else 1  # the event's value: the lives it costs
+            events.append(Event(EventKind.HURT, lives, self.player.box))
             self.player.respawn(self.spawn, self.tuning.invulnerable_ticks)
             del self.moves[self.player]
 

@@ -17,6 +17,7 @@ This (re)writes, in ``assets/`` next to the ``game`` package:
   meets the air and planks with closed ends, with the terrain sets that let Tiled paint them
 * ``player.png``, ``enemy.png``, ``coin.png``: horizontal sprite-sheet strips
 * ``exit.png``, ``heart.png``: single images
+* ``checkpoint.png``: the checkpoint's lantern on a post, unlit and lit (two frames)
 * ``sky.png``, ``background.png`` and ``places/NAME-sky.png``, ``places/NAME-scenery.png``:
   each place's still sky and scrolling scenery (the meadow's twice: the title screen's)
 
@@ -81,6 +82,8 @@ COIN_SIZE = 8
 COIN_FRAME_COUNT = 4
 HEART_SIZE = 8
 EXIT_WIDTH, EXIT_HEIGHT = 16, 32
+CHECKPOINT_WIDTH, CHECKPOINT_HEIGHT = 16, 32  # one frame; the strip is unlit, then lit
+CHECKPOINT_FRAME_COUNT = 2
 BACKGROUND_WIDTH, BACKGROUND_HEIGHT = 320, 180
 
 PLANK_HEIGHT = 5  # one-way platform: only the top rows of its tile are drawn
@@ -1346,6 +1349,61 @@ def draw_exit() -> pygame.Surface:
     return surface
 
 
+# The checkpoint is a lantern on a wooden post: nothing like the goal's flag on its metal
+# pole and stone base, so no one takes one for the other. Unlit, its glass is dark and cold;
+# lit (the respawn point is here), it glows gold round a white-hot flame.
+LANTERN_MAP = (
+    "......oooo......",
+    ".....om..mo.....",
+    "....oooooooo....",
+    "...ollllllllo...",
+    "...ommmmmmmmo...",
+    "....oMggggMo....",
+    "....oMgffgMo....",
+    "....oMfFFfMo....",
+    "....oMfFFfMo....",
+    "....oMgffgMo....",
+    "....oMggggMo....",
+    "...ommmmmmmmo...",
+    "....oooooooo....",
+)
+LANTERN_POST = "......oWwo......"
+LANTERN_BASE = (
+    ".....oWWwwo.....",
+    "....oWWWwwwo....",
+    "...oookkkkooo...",
+    "....oooooooo....",
+)
+LANTERN_COLORS = {
+    "o": OUTLINE,
+    "l": METAL_LIGHT,
+    "m": METAL,
+    "M": METAL_DARK,
+    "W": WOOD_LIGHT,
+    "w": WOOD_DARK,
+    "k": WOOD,
+}
+UNLIT_GLASS = {"g": (58, 64, 104), "f": (74, 82, 126), "F": (92, 100, 146)}  # cold, dark
+LIT_GLASS = {"g": GOLD, "f": GOLD_LIGHT, "F": WHITE}  # a flame, bright to its heart
+
+
+def draw_checkpoint_frame(glass: Mapping[str, RGB]) -> pygame.Surface:
+    """One 16x32 checkpoint: the lantern with ``glass`` colours on its post."""
+    surface = new_surface(CHECKPOINT_WIDTH, CHECKPOINT_HEIGHT)
+    colors = {**LANTERN_COLORS, **glass}
+    paint(surface, LANTERN_MAP, colors)
+    base_top = CHECKPOINT_HEIGHT - len(LANTERN_BASE)
+    for y in range(len(LANTERN_MAP), base_top):
+        paint(surface, (LANTERN_POST,), colors, 0, y)
+    paint(surface, LANTERN_BASE, colors, 0, base_top)
+    return surface
+
+
+def draw_checkpoint() -> pygame.Surface:
+    """Return the checkpoint's strip: the lantern unlit (not reached), then lit."""
+    return strip([draw_checkpoint_frame(UNLIT_GLASS), draw_checkpoint_frame(LIT_GLASS)])
+
+
 # --------------------------------------------------------------------------
 # Background: each place's still sky and its scrolling scenery
 # --------------------------------------------------------------------------
@@ -1565,6 +1623,8 @@ IMAGES: dict[str, tuple[Callable[[], pygame.Surface], tuple[int, int]]] = {
     "enemy.png": (draw_enemy, (FRAME * ENEMY_FRAME_COUNT, FRAME)),
     "coin.png": (draw_coin, (COIN_SIZE * COIN_FRAME_COUNT, COIN_SIZE)),
     "exit.png": (draw_exit, (EXIT_WIDTH, EXIT_HEIGHT)),
+    "checkpoint.png": (draw_checkpoint,
+                       (CHECKPOINT_WIDTH * CHECKPOINT_FRAME_COUNT, CHECKPOINT_HEIGHT)),
     "heart.png": (draw_heart, (HEART_SIZE, HEART_SIZE)),
     "sky.png": (draw_sky_picture, (BACKGROUND_WIDTH, BACKGROUND_HEIGHT)),
     "background.png": (draw_background, (BACKGROUND_WIDTH, BACKGROUND_HEIGHT)),

@@ -9,7 +9,7 @@ It (re)writes, in ``assets/guide/``:
 * ``player-point.png``: a Player drawn as a point, and the hitbox the game hangs from it
   (its top-left corner on the point), over the game's own tiles;
 * ``reach.png``: the path of the feet in a full running jump, recorded tick by tick from
-  the real simulation (:func:`game.levels.reach.jump_path`), over a grid of 16 px tiles
+  the real simulation (:func:`game.checker.reach.jump_path`), over a grid of 16 px tiles
   with ledges 3 and 2 tiles up;
 * ``hop-along-tick-60.png`` and ``hop-along-tick-100.png``: the game's own screenshots of
   Hop Along at two ticks, where the pennant has waved on and the far clouds have scrolled
@@ -33,9 +33,9 @@ from pathlib import Path
 import pygame
 
 from game.app.files import load_image, save_image
+from game.checker.reach import jump_path
 from game.levels import FIRST_LEVEL, LEVELS_DIR
 from game.levels.closed_output import quiet_when_output_closes
-from game.levels.reach import jump_path
 from game.sim.tuning import Tuning
 from game.tools.art import DIRT_FILL, SPIKES, TILE_COUNT
 from game.tools.terrain import repaint_rows

@@ -82,7 +82,7 @@ def main(argv: list[str] | None = None) -> int:
         from game.app.cli import main as play
 
         return play([f"--level={path}", "--watch"])
-    from game.levels.__main__ import main as levels
+    from game.checker.cli import main as levels
 
     return levels(["check", "--", str(path)])
 

@@ -1,6 +1,6 @@
 """Check one map the way ``python -m game.levels check`` does, and say what was found.
 
-Where it sits: the command line (:mod:`game.levels.__main__`) calls :func:`check_map` for
+Where it sits: the command line (:mod:`game.checker.cli`) calls :func:`check_map` for
 each map and prints the :class:`MapReport` as text lines or as JSON (for the Tiled
 extension in ``levels/extensions/``, which lists the findings in Tiled's Issues panel).
 
@@ -11,7 +11,7 @@ selecting the object in an editor.
 A map is first read (:func:`game.levels.loader.check_level`): errors there make it *bad*,
 as do the designer checks' few errors (a next level that does not load ends the game when
 this one is finished). Everything else is a warning with its place, and the map is then
-judged (:mod:`game.levels.verdict`): solved, impossible or not decided; a recorded win
+judged (:mod:`game.checker.verdict`): solved, impossible or not decided; a recorded win
 given with ``--proof`` makes it solved, whatever the warnings suggest.
 """
 
@@ -20,7 +20,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from game.levels.designer_checks import designer_findings
+from game.checker.designer_checks import designer_findings
+from game.checker.solver import Effort
+from game.checker.verdict import Kind, Verdict, judge, judge_proof
 from game.levels.errors import (
     WARNINGS_SHOWN_PER_KIND,
     Findings,
@@ -33,8 +35,6 @@ from game.levels.errors import (
 )
 from game.levels.loader import check_level, load_level
 from game.levels.reading import read_level_file
-from game.levels.solver import Effort
-from game.levels.verdict import Kind, Verdict, judge, judge_proof
 from game.sim.inputs import InputScript, InputScriptError
 from game.sim.level import Level
 from game.sim.tuning import Tuning
@@ -139,7 +139,7 @@ def _add_verdict(report: MapReport, verdict: Verdict) -> None:
     report.verdict = verdict.kind
     if verdict.kind is Kind.SOLVED:
         return
-    where = tile_place(*verdict.tile) if verdict.tile is not None else ""
+    where = tile_place(*verdict.tile, verdict.layer) if verdict.tile is not None else ""
     # Impossible is an error; not decided is neither proven bad nor good: a warning line,
     # counted apart in the summary and given its own exit status.
     report.add("error" if verdict.kind is Kind.IMPOSSIBLE else "warning", where,

@@ -20,10 +20,12 @@ missing one a pixel wider (plain: jump pressed while on the ground; coyote: pres
 tick, the last coyote tick included).
 
 Every measurement is bounded by work, counted in ticks of play: the test levels are sized
-from the jump the tuning gives (worked out with :func:`game.levels.reachable.jump_rise`),
-at most :data:`MAX_START_PLACES` start places are tried across one tick's run, and
+from the jump the tuning gives (worked out with :func:`game.checker.reachable.jump_rise`),
+at most :data:`MAX_START_PLACES` start places are tried across one tick's run (and, for
+the gaps, the one whose run stands last just short of the edge: the furthest any run
+leaves from, so the widest gap is the bound :mod:`game.checker.jump_envelope` proves), and
 :func:`limits_of` stops a measurement after :data:`MAX_MEASURE_TICKS` ticks and says so
-(the default physics take about 24,000; a floaty jump, 30 s in the air, takes more; making
+(the default physics take about 28,000; a floaty jump, 30 s in the air, takes more; making
 a test level counts too, a tick for every :data:`CELLS_PER_TICK` of its cells). The
 checker's summary (:func:`own_reaches`) gives the reach on at most :data:`MAX_OWN_PHYSICS`
 maps that set their own physics, within :data:`SUMMARY_MEASURE_TICKS` ticks in all.
@@ -46,10 +48,10 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
+from game.checker.reachable import jump_rise
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import TileGrid
-from game.levels.reachable import jump_rise
 from game.sim.inputs import Action, Actions
 from game.sim.level import Level
 from game.sim.snapshot import Snapshot
@@ -167,6 +169,7 @@ RUN_COL = 2  # where the player starts its run
 EDGE_COL = 12  # where the floor ends (a gap) or the ledge starts (at least)
 FLOOR_ROWS = 6  # how deep the floors go under their top
 EARLY_PRESSES = 8  # jump presses tried before the edge or the wall is reached
+EDGE_SHAVE_PX = 1 / 4096  # how far short of the edge the furthest run stands last
 
 
 @dataclass(frozen=True)
@@ -358,7 +361,7 @@ def _crosses(tuning: Tuning, gap_px: int) -> tuple[bool, bool]:
     _floor(grid, 0, edge, top, bottom)
     _floor(grid, edge + gap_px, grid.width_px, top, bottom)
     plain = anyhow = False
-    for offset in _offsets(tuning):
+    for offset in _offsets(tuning) + _edge_offsets(tuning, bench):
         for attempt in _attempts(tuning, bench, grid, top, edge + gap_px, offset):
             plain = plain or (attempt.landed and attempt.grounded)
             anyhow = anyhow or attempt.landed
@@ -392,6 +395,27 @@ def _offsets(tuning: Tuning) -> list[float]:
     return [step * place / MAX_START_PLACES for place in range(MAX_START_PLACES)]
 
 
+def _edge_offsets(tuning: Tuning, bench: _Bench) -> list[float]:
+    """The start place whose run stands last with its left edge :data:`EDGE_SHAVE_PX` short
+    of the edge: the furthest any run leaves from, so the furthest any jump off it carries
+    (the quarter pixels of :func:`_offsets` may miss it by up to a quarter pixel)."""
+    grid = bench.grid()
+    _floor(grid, 0, bench.edge_px, bench.top_px, bench.floor_bottom_px)
+    spawn = Box(RUN_COL * TEST_TILE_PX, bench.top_px - tuning.player_height_px,
+                tuning.player_width_px, tuning.player_height_px)
+    world = World(Level(Path("limits"), grid, spawn), tuning)
+    run = frozenset({Action.RIGHT})
+    last = world.player.box.x
+    for _ in range(MAX_AIR_TICKS):
+        _step(world, run)
+        if not world.player.on_ground:
+            break
+        last = world.player.box.x
+    offset = bench.edge_px - EDGE_SHAVE_PX - last
+    step = tuning.run_speed_px_s * tuning.tick_s
+    return [offset] if 0 < offset <= step else []
+
+
 def _gaps_foreseen(tuning: Tuning) -> tuple[int, int]:
     """The widest gaps (plain, any jump) foreseen from jumps over a pit with no far side.
 
@@ -405,7 +429,7 @@ def _gaps_foreseen(tuning: Tuning) -> tuple[int, int]:
     top, edge = bench.top_px, bench.edge_px
     _floor(grid, 0, edge, top, bench.floor_bottom_px)
     plain = anyhow = 0
-    for offset in _offsets(tuning):
+    for offset in _offsets(tuning) + _edge_offsets(tuning, bench):
         for attempt in _attempts(tuning, bench, grid, top, grid.width_px, offset):
             if attempt.falling_right_px is None:
                 continue

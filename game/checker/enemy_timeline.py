@@ -1,6 +1,6 @@
 """Enemies go their own way: where each one is at each tick, written down once for a search.
 
-Where it sits: inside :mod:`game.levels.solver`, around every move the search tries.
+Where it sits: inside :mod:`game.checker.solver`, around every move the search tries.
 
 What it teaches: **leaving out what a choice cannot change.** An enemy meets only the walls,
 the moving platforms and the player's stomp (:meth:`game.sim.world.World.step`): where it

@@ -1,6 +1,6 @@
 """When are two states of a search "the same"? The key the solver files them under.
 
-Where it sits: :mod:`game.levels.solver` keeps only the first state it meets under each key,
+Where it sits: :mod:`game.checker.solver` keeps only the first state it meets under each key,
 so the key decides how much of the game's state space the search may skip.
 
 What it teaches: **pruning on a grid.** Two states whose player is within a few pixels and a
@@ -28,6 +28,7 @@ from game.sim.world import World
 
 SAME_PLACE_PX = 4.0  # states closer than this (and alike in speed) count as one
 SAME_SPEED_PX_S = 30.0
+FINE_PLACE_PX = 1.0  # ... or this, where inputs are timed to the tick
 PLATFORM_PHASE_PX = 32.0  # moving platforms this close along their paths count as alike
 NEAR_PX = 96.0  # a platform whose route comes this close to the player is in the key
 
@@ -55,14 +56,17 @@ def _phase(platform: Platform) -> int:
     return math.floor(platform.travelled_px / PLATFORM_PHASE_PX) % steps
 
 
-def state_key(world: World, held: Actions, routes: list[Box]) -> StateKey:
+def state_key(world: World, held: Actions, routes: list[Box],
+              place_px: float = SAME_PLACE_PX) -> StateKey:
     """The key of ``world``'s state after a move that held ``held`` (holding jump matters: a
-    new jump needs a fresh press). ``routes``: each platform's :func:`route_box`."""
+    new jump needs a fresh press). ``routes``: each platform's :func:`route_box`;
+    ``place_px``: how close two places must be to count as one (the solver's second stage,
+    which times its inputs to the tick, tells apart places :data:`FINE_PLACE_PX` apart)."""
     player = world.player
     box = player.box
     phases = tuple(_phase(platform) if route_is_near(box, region) else None
                    for platform, region in zip(world.platforms, routes, strict=True))
-    return (round(box.x / SAME_PLACE_PX), round(box.y / SAME_PLACE_PX),
+    return (round(box.x / place_px), round(box.y / place_px),
             round(player.vx / SAME_SPEED_PX_S), round(player.vy / SAME_SPEED_PX_S),
             player.on_ground, player.dropping_through, Action.JUMP in held,
             phases, len(world.enemies), world.spawn)

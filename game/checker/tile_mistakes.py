@@ -1,6 +1,6 @@
 """Tiles a map loads with but a designer would not mean: what the checker says of tile layers.
 
-Where it sits: :mod:`game.levels.designer_checks` reads a loaded map's tile layers again and
+Where it sits: :mod:`game.checker.designer_checks` reads a loaded map's tile layers again and
 asks these three questions of each; the game itself plays every such map as it is painted.
 
 What it teaches: the game reads a tile's class and its flip flags, never its picture or its
@@ -15,7 +15,7 @@ layer's name; where those say something else, say so, at the first tile, with ho
   or a fence has see-through pixels round it), painted on a layer that holds Solid tiles,
   in a cell with a Solid tile of that same layer beside it, above or below.
 * **Colliding tiles on a layer whose name says it does not collide** ("background (no
-  collision)", "decor": :func:`game.levels.wall_layers.says_it_does_not_collide`): every
+  collision)", "decor": :func:`game.checker.wall_layers.says_it_does_not_collide`): every
   tile layer collides, whatever its name.
 """
 
@@ -27,6 +27,7 @@ from pathlib import Path
 
 import pygame
 
+from game.checker.wall_layers import says_it_does_not_collide
 from game.collision.shapes import TileKind
 from game.levels.classes import TILE_KINDS
 from game.levels.errors import Findings, LevelError, Place, layer_place, tile_place
@@ -35,7 +36,6 @@ from game.levels.images import load_image
 from game.levels.layers import LayerNode
 from game.levels.tiledata import FLIPPED_D, FLIPPED_V, split
 from game.levels.tilesets import Tileset, Tilesets
-from game.levels.wall_layers import says_it_does_not_collide
 
 Finding = tuple[str, str, str, str]  # severity, where, message, fix
 TileLayerData = tuple[LayerNode, Sequence[int]]

@@ -26,20 +26,30 @@ What it teaches: a **beam search** over a deterministic simulation.
   from the platforms' routes alone, since they go their ways whatever the player does), so
   a beam waiting for a ferry pays for one child instead of seven every 6 ticks. A wait
   counts as the moves its ticks would take, so the budget still measures the work done.
+* **Two stages: plain moves, then timed inputs.** The moves above, held 6 ticks each, may
+  spend :data:`PLAIN_SHARE` of the budget (every shipped level is solved there). If they
+  find no route, the search starts again from the spawn and also tries inputs timed to the
+  tick (:meth:`_Search.timed_children`): on the ground near an edge, jump pressed on each
+  tick from :data:`EARLY_TICKS` before the run leaves the ground to the last coyote tick,
+  held for each number of ticks of the rise; in the air just before landing, jump pressed
+  so the jump buffer makes it leave on the first tick on the ground. This stage tells
+  apart places :data:`~game.checker.search_key.FINE_PLACE_PX` apart.
+* **The budget grows with the map** (:mod:`game.checker.search_budget`): moves for each
+  cell the reach proof's fill reached, unless ``--budget N`` gives one.
 * **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
   state, step the world, keep the child's state.
-* **Enemies go their own way** (:mod:`game.levels.enemy_timeline`): where an enemy is at a
+* **Enemies go their own way** (:mod:`game.checker.enemy_timeline`): where an enemy is at a
   tick does not depend on the player, so the first move through a tick writes the enemies
   down and later moves leave out those far from the player, putting them back afterwards.
 * **A layer per move.** All children of the current beam are scored by how far they still
   are from an Exit, and the best :attr:`Effort.width` survive, at most :data:`PER_CELL` of
   them in any one tile while others are left: a beam whose states all stand in one place is
   one state wide, and stuck together. Two states with the same key
-  (:mod:`game.levels.search_key`: about the same place and speed, the nearby moving
+  (:mod:`game.checker.search_key`: about the same place and speed, the nearby moving
   platforms at the same point of their paths) are the same state: only the first is kept,
   so the beam cannot go round in circles.
 * **The score** is the number of steps from the player's cell to an Exit along the moves
-  of the reach proof (:func:`game.levels.reachable.steps_to_exit`): it knows that a ledge
+  of the reach proof (:func:`game.checker.reachable.steps_to_exit`): it knows that a ledge
   too high must be climbed from elsewhere, and a state from which no step leads on to an
   Exit (at the bottom of a pit) is dropped. The beams add a penalty for falling with no
   floor below: standing at the edge of a pit waiting for a platform is better than jumping
@@ -61,8 +71,8 @@ What it teaches: a **beam search** over a deterministic simulation.
   route that needs a life lost (spikes crossed while the respawn's protection lasts) is not
   put off behind every state that kept its lives.
 
-The search never proves a map *impossible*: :mod:`game.levels.reachable` does that, and
-:mod:`game.levels.verdict` asks it first. Everything is deterministic: the search is bounded
+The search never proves a map *impossible*: :mod:`game.checker.reachable` does that, and
+:mod:`game.checker.verdict` asks it first. Everything is deterministic: the search is bounded
 by **work**, the moves it tries (:attr:`Effort.budget`), so the same map and options give the
 same script and the same verdict on any machine, however loaded. On a crowded map a move
 costs more (every enemy and platform is stepped each tick, every coin is looked at and
@@ -85,12 +95,20 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from game.checker.enemy_timeline import Away, EnemyTimeline
+from game.checker.reachable import steps_to_exit
+from game.checker.search_budget import map_budget
+from game.checker.search_key import (
+    FINE_PLACE_PX,
+    SAME_PLACE_PX,
+    StateKey,
+    route_box,
+    route_is_near,
+    state_key,
+)
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind
-from game.levels.enemy_timeline import Away, EnemyTimeline
 from game.levels.loader import load_level
-from game.levels.reachable import steps_to_exit
-from game.levels.search_key import StateKey, route_box, route_is_near, state_key
 from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action, Actions, InputEvent, Recorder
 from game.sim.level import Level
@@ -115,7 +133,13 @@ PER_CELL = 1  # a beam keeps at most this many states in one tile while others a
 UNREACHABLE = math.inf
 BEST_FIRST_WEIGHT = 3.0  # how much more a tile of distance counts than a tile's worth of time
 FEET_PX = 0.5  # the search scores the cell just above the middle of the feet
-DEFAULT_BUDGET = 50_000  # moves the search may try on one map (each move is 6 ticks)
+PLAIN_SHARE = 0.6  # of a map's budget, what the plain moves may spend before timed inputs
+EARLY_TICKS = 16  # an edge's jumps are pressed from this many ticks before the run leaves it
+EDGE_LOOK_PX = 48.0  # the edge's jumps are tried from the first state this close to an edge
+MAX_RUN_TICKS = 60  # the run to an edge is given up after this many ticks
+MAX_FALL_TICKS = 120  # a timed jump that has not landed after this many ticks is dropped
+FULL_HOLD_TICKS = 10 * MOVE_TICKS  # jump held this long: the whole rise, on any physics
+PHASES_PER_PX = 8  # an edge's jumps are tried again from a place 1/8 px further along a tick
 WAIT_TICKS = 30  # the wait macro: stand still this long, for a moving platform to come round
 UNTIL_A_PLATFORM_COMES = 0  # the other wait: stand still until a moving platform comes ...
 COMES_PX = 16.0  # ... this close to the player
@@ -146,7 +170,8 @@ def move_weight(level: Level) -> int:
 class Effort:
     """How hard to look: the beam's width where it is not stuck, and the limits on the work."""
 
-    budget: int = DEFAULT_BUDGET  # moves the whole search may try: the bound on its work
+    budget: int | None = None  # moves the whole search may try (None: the map's own budget,
+    #                            :func:`game.checker.search_budget.map_budget`)
     greedy_moves: int = 14_000  # of those, the most the best-first search may try first
     width: int = 3  # the beam's width where it is not stuck
     seconds: float | None = None  # an extra wall-clock limit (None: none, the default)
@@ -173,8 +198,9 @@ class Solution:
     route: list[Box] = field(default_factory=list)  # the hitbox after every tick
     moves_tried: int = 0
     timed_out: bool = False
-    budget: int = DEFAULT_BUDGET
+    budget: int = 0  # the moves it might have tried: ``--budget N``, or the map's own
     states: int = 0  # distinct states the search kept
+    own_budget: bool = True  # the budget is the map's own (no ``--budget N`` given)
 
     @property
     def out_of_budget(self) -> bool:
@@ -259,6 +285,12 @@ class _Search:
         # (place, tick a platform comes) of each wait tried, with the layer it was tried at
         self.waits: dict[tuple[float, float, int], int] = {}
         self.moves_tried = 0
+        self.budget = (effort.budget if effort.budget is not None
+                       else map_budget(len(self.steps)))
+        self.limit = self.budget  # the moves this stage of the search may reach (run())
+        self.timed = False  # the second stage: timed inputs are tried too
+        # (edge cell, direction, place within a tick's run) of each edge's jumps tried
+        self.edges_tried: set[tuple[tuple[int, int], int, int]] = set()
         self.weight = move_weight(level)  # moves of the budget each move counts for
         self.states = 0
         self.pit_penalty = 0.0  # the beams set it: see beams()
@@ -287,8 +319,9 @@ class _Search:
         return float(steps)
 
     def key(self, choice: Actions) -> StateKey:
-        """What makes two states the same for the search (:mod:`game.levels.search_key`)."""
-        return state_key(self.world, choice, self.routes)
+        """What makes two states the same for the search (:mod:`game.checker.search_key`)."""
+        return state_key(self.world, choice, self.routes,
+                         FINE_PLACE_PX if self.timed else SAME_PLACE_PX)
 
     def ticks_until_a_platform_comes(self) -> int | None:
         """How long a player standing here must wait for a moving platform (one not within
@@ -321,14 +354,32 @@ class _Search:
 
     def out_of_time(self) -> bool:
         """The search must stop: its budget of moves is spent, or its seconds are up."""
-        return self.moves_tried >= self.effort.budget or (
-            self.deadline is not None and time.monotonic() > self.deadline)
+        return self.moves_tried >= self.limit or self.past_deadline()
+
+    def past_deadline(self) -> bool:
+        return self.deadline is not None and time.monotonic() > self.deadline
 
     def run(self) -> Node | None:
+        """The plain moves first, within :data:`PLAIN_SHARE` of the budget; then, if they
+        found no route, the search again from the spawn with timed inputs too
+        (:meth:`timed_children`), until a route is found or the budget is spent."""
+        self.limit = max(1, math.floor(self.budget * PLAIN_SHARE))
+        found = self.stage()
+        if found is not None or self.past_deadline():
+            return found
+        self.timed, self.limit, self.waits = True, self.budget, {}
+        return self.stage()
+
+    def stage(self) -> Node | None:
         """Best first (on a level without moving platforms), then beams that widen where
-        they are stuck, until a route is found or the budget is spent."""
-        if not self.world.platforms:  # waiting never looks better to a best-first search
-            found = self.best_first(min(self.effort.greedy_moves, self.effort.budget))
+        they are stuck, until a route is found or this stage's share is spent."""
+        # Waiting never looks better to a best-first search: on a level with moving
+        # platforms, only the second stage searches best first, for half its share (a beam
+        # drops a timed jump while it is over a pit, as it drops every fall)
+        if not self.world.platforms or self.timed:
+            share = self.limit - self.moves_tried
+            found = self.best_first(self.moves_tried + min(
+                self.effort.greedy_moves, share // 2 if self.world.platforms else share))
             if found is not None or self.out_of_time():
                 return found
         return self.beams()
@@ -340,6 +391,11 @@ class _Search:
         the last coyote tick off each edge a run went over; stops early at an Exit (its
         Node comes with an infinitely good score of minus infinity)."""
         ledges: list[Actions] = []  # runs that went off an edge: try them with a late jump
+        if self.timed:
+            for found in self.timed_children(snapshot, node, ticks, seen, layer):
+                yield found
+                if found[0] == -math.inf:
+                    return
         for choice, move_ticks in self.moves:
             if self.out_of_time():
                 return
@@ -403,6 +459,187 @@ class _Search:
         if score < self.best[0]:
             self.best = (score, self.world.player.box, child)
         return score, Snapshot.of(self.world), child
+
+    def timed_children(self, snapshot: Snapshot, node: Node | None, ticks: int,
+                       seen: dict[StateKey, int], layer: int,
+                       ) -> Iterator[tuple[float, Snapshot, Node]]:
+        """The timed inputs, tried in the search's second stage where they matter: on the
+        ground near an edge, jumps pressed on each tick of the run to it and of coyote time
+        after it, each held for each number of ticks of the rise (:meth:`edge_jumps`); in
+        the air just before landing, jump pressed so the jump buffer makes it leave on the
+        first tick on the ground (:meth:`landing_jump`)."""
+        snapshot.restore(self.world)
+        if self.world.player.on_ground:
+            yield from self.edge_jumps(snapshot, node, ticks, seen, layer)
+        elif self.lands_soon():
+            yield from self.landing_jump(snapshot, node, ticks, seen, layer)
+
+    def edge_ahead(self, direction: int) -> tuple[int, int] | None:
+        """The cell where the floor under the player's feet ends within
+        :data:`EDGE_LOOK_PX` ahead in ``direction`` (+1 right, -1 left), if it does."""
+        world, grid = self.world, self.level.grid
+        box = world.player.box
+        step = 2.0  # px between the places looked at, narrower than any gap worth a jump
+        front = box.right if direction > 0 else box.left
+        for place in range(math.ceil(EDGE_LOOK_PX / step) + 1):
+            x = front + direction * (place * step + 0.5)
+            if not any(shape.kind is not TileKind.HAZARD
+                       for shape in world.solids.shapes_in(Box(x - 0.5, box.bottom, 1.0, 1.0))):
+                return math.floor(x / grid.tile_w), math.floor(box.bottom / grid.tile_h)
+        return None
+
+    def edge_jumps(self, snapshot: Snapshot, node: Node | None, ticks: int,
+                   seen: dict[StateKey, int], layer: int,
+                   ) -> Iterator[tuple[float, Snapshot, Node]]:
+        """Once for each edge, direction and place within a tick's run (where the last step
+        before the edge falls changes how far a jump carries, to 1/:data:`PHASES_PER_PX`
+        px): run to the edge from here, and press jump on each tick from
+        :data:`EARLY_TICKS` before the run leaves the ground to the last tick of coyote time,
+        latest first; hold it for the whole rise, or, with something overhead
+        (:meth:`overhead`), for each number of ticks until the rise ends (a longer hold is
+        the same jump); then hold the run until the player lands (:meth:`run_until_landing`).
+        """
+        world, player = self.world, self.world.player
+        lives = node.lives_lost if node is not None else 0
+        step = world.tuning.run_speed_px_s * world.tuning.tick_s  # px a tick at a run
+        for run in RUNS:
+            snapshot.restore(world)
+            direction = 1 if R in run else -1
+            edge = self.edge_ahead(direction)
+            # where the run's last step before the edge falls changes how far a jump carries:
+            # each edge is tried from each place within a tick's run, to 1/PHASES_PER_PX px
+            phase = math.floor(player.box.x % step * PHASES_PER_PX)
+            if edge is None or (edge, direction, phase) in self.edges_tried:
+                continue
+            self.edges_tried.add((edge, direction, phase))
+            states = [snapshot]
+            left_at: int | None = None
+            for tick in range(1, MAX_RUN_TICKS + 1):
+                events = world.step(run)
+                self.timeline.write_down(ticks + tick)
+                if any(e.kind in (EventKind.EXIT, EventKind.HURT) for e in events):
+                    break
+                states.append(Snapshot.of(world))
+                if left_at is None and not player.on_ground:
+                    left_at = tick
+                if left_at is not None and not player.coyote_ticks_left:
+                    break
+            self.moves_tried += math.ceil(len(states) / MOVE_TICKS) * self.weight
+            if left_at is None:
+                continue
+            holds = (range(1, FULL_HOLD_TICKS) if self.overhead(snapshot, states[left_at])
+                     else range(FULL_HOLD_TICKS, FULL_HOLD_TICKS + 1))
+            # the latest presses first: the widest jumps are the late ones
+            for press in range(len(states) - 1, max(0, left_at - EARLY_TICKS) - 1, -1):
+                ran = Node(node, run, ticks + press, lives) if press else node
+                for hold in holds:
+                    if self.out_of_time():
+                        return
+                    states[press].restore(world)
+                    outcome = self.try_move(states[press], ticks + press, run | {J}, hold)
+                    if outcome > 0:
+                        found = self.child(states[press], ran, run | {J}, ticks + press, hold,
+                                           outcome, seen, layer)
+                        if found is not None:
+                            yield found
+                            return
+                    if outcome != 0:
+                        break
+                    rising = player.rising_from_jump
+                    jumped = Node(ran, run | {J}, ticks + press + hold, lives)
+                    landed = self.run_until_landing(jumped.ticks, run)
+                    if landed is None:  # fell to a life lost, or still falling
+                        if not rising:
+                            break
+                        continue
+                    found = self.child(states[press], jumped, run, jumped.ticks, landed[0],
+                                       landed[1], seen, layer)
+                    if found is not None:
+                        yield found
+                        if found[0] == -math.inf:
+                            return
+                    if not rising:
+                        break  # the rise has ended: holding longer is the same jump
+
+    def overhead(self, start: Snapshot, edge: Snapshot) -> bool:
+        """Is anything (a ceiling, spikes) above the way from ``start`` to where the run
+        leaves the ground at ``edge``, and a full jump beyond, lower than a full jump rises?
+        Only then is a jump cut short worth trying at each tick."""
+        tuning = self.world.tuning
+        rise_px = tuning.jump_speed_px_s ** 2 / (2 * tuning.gravity_px_s2)
+        beyond_px = 2 * tuning.jump_speed_px_s / tuning.gravity_px_s2 * tuning.run_speed_px_s
+        edge.restore(self.world)
+        there = self.world.player.box
+        start.restore(self.world)
+        here = self.world.player.box
+        left = min(here.left, there.left) - beyond_px
+        right = max(here.right, there.right) + beyond_px
+        top = min(here.top, there.top)
+        region = Box(left, top - rise_px, right - left, rise_px)
+        return bool(self.world.solids.shapes_in(region))
+
+    def run_until_landing(self, start: int, run: Actions) -> tuple[int, int] | None:
+        """Hold ``run`` from tick ``start`` until the player stands or reaches an Exit: the
+        ticks it took and the outcome (as :meth:`try_move` gives it); None if a life was lost
+        on the way, or the player fell where no step leads on to an Exit, or
+        :data:`MAX_FALL_TICKS` passed in the air. A timed jump that falls into
+        a pit is not kept: each of them would make a tree of falling states."""
+        player = self.world.player
+        for tick in range(1, MAX_FALL_TICKS + 1):
+            outcome = self.hold(run, start + tick - 1, 1, ()) or 0  # (no enemy left out)
+            if outcome or player.on_ground:
+                break
+            if self.cell() not in self.steps:
+                outcome = -1  # no way on to an Exit from here (the reach proof's steps)
+                break
+        self.moves_tried += math.ceil(tick / MOVE_TICKS) * self.weight
+        if outcome < 0 or not (outcome or player.on_ground):
+            return None
+        return tick, tick if outcome else 0
+
+    def lands_soon(self) -> bool:
+        """Falling, with a floor under the feet within the fall of one move."""
+        world = self.world
+        player, tuning = world.player, world.tuning
+        if player.vy <= 0:
+            return False
+        box = player.box
+        fall = tuning.max_fall_speed_px_s * tuning.tick_s * (MOVE_TICKS + 1)
+        return any(shape.kind is not TileKind.HAZARD
+                   for shape in world.solids.shapes_in(Box(box.x, box.bottom, box.w, fall)))
+
+    def landing_jump(self, snapshot: Snapshot, node: Node | None, ticks: int,
+                     seen: dict[StateKey, int], layer: int,
+                     ) -> Iterator[tuple[float, Snapshot, Node]]:
+        """Steer on as the move before did, jump let go, and press jump again on the tick
+        the player lands (while still in the air: the jump buffer keeps it), so the next
+        jump leaves on the first tick on the ground; hold it for one move."""
+        world, player = self.world, self.world.player
+        steer = (node.choice if node is not None else frozenset()) - {J}
+        lives = node.lives_lost if node is not None else 0
+        for tick in range(1, 2 * MOVE_TICKS + 1):
+            events = world.step(steer)
+            self.timeline.write_down(ticks + tick)
+            if any(e.kind in (EventKind.EXIT, EventKind.HURT) for e in events):
+                return
+            if player.on_ground:
+                break
+        else:
+            return
+        self.moves_tried += math.ceil(tick / MOVE_TICKS) * self.weight
+        if tick < 2:
+            return  # no tick to let go of jump on before the press
+        snapshot.restore(world)
+        outcome = self.try_move(snapshot, ticks, steer, tick - 1)
+        if outcome != 0:
+            return
+        let_go = Node(node, steer, ticks + tick - 1, lives)
+        after = Snapshot.of(world)
+        outcome = self.try_move(after, let_go.ticks, steer | {J})
+        found = self.child(after, let_go, steer | {J}, let_go.ticks, MOVE_TICKS, outcome,
+                           seen, layer)
+        if found is not None:
+            yield found
 
     def ran_off_an_edge(self) -> bool:
         """After a run: in the air without a jump, with coyote time left beyond the next
@@ -613,7 +850,7 @@ def replay(level_path: Path, held: Sequence[Actions], level: Level | None = None
 def solve(level: Level, effort: Effort | None = None,
           steps: dict[tuple[int, int], int] | None = None) -> Solution:
     """Search ``level`` for a route from the spawn to an Exit (``steps``: the reach proof's
-    :attr:`~game.levels.reachable.Reach.steps`, when worked out already; empty when it gave
+    :attr:`~game.checker.reachable.Reach.steps`, when worked out already; empty when it gave
     none, so the score is the open cells' :func:`distances_to_exit`)."""
     search = _Search(level, effort or Effort(), steps)
     found = search.run() if level.exits else None
@@ -623,9 +860,11 @@ def solve(level: Level, effort: Effort | None = None,
         if not won:  # the search and a replay disagree: the snapshot missed some state
             raise AssertionError(f"{level.path}: the route found does not replay")
         return Solution(level, True, held, route[-1], route, search.moves_tried,
-                        budget=search.effort.budget, states=search.states)
+                        budget=search.budget, states=search.states,
+                        own_budget=search.effort.budget is None)
     furthest_held = _held_per_tick(search.best[2])
     _, route = replay(level.path, furthest_held, level)
     timed_out = search.deadline is not None and time.monotonic() > search.deadline
     return Solution(level, False, furthest_held, search.best[1], route, search.moves_tried,
-                    timed_out=timed_out, budget=search.effort.budget, states=search.states)
+                    timed_out=timed_out, budget=search.budget, states=search.states,
+                    own_budget=search.effort.budget is None)

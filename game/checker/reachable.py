@@ -664,7 +664,7 @@ def reachable(world: World, work: FillWork | None = None, narrow: bool = False,
     ``narrow``: a cheaper fill that is a guide, never a proof: it lets the player ride a
     platform's top but not be pushed by its sides, and stomp an enemy only where it starts.
     Its steps lead a search more tightly; where it reaches an Exit, the full fill would too,
-    so no proof is lost by asking it first (:func:`game.levels.verdict.prove_impossible`)."""
+    so no proof is lost by asking it first (:func:`game.checker.verdict.prove_impossible`)."""
     envelope = envelope_of(world.level, world.tuning)
     if envelope is None:
         return None

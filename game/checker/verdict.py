@@ -1,18 +1,23 @@
 """Can this map be won? Three honest answers: solved, impossible, or not decided.
 
-Where it sits: between the checker's command line (:mod:`game.levels.__main__`) and the
-two tools that answer, :mod:`game.levels.reachable` (which can prove a map impossible) and
-:mod:`game.levels.solver` (which can prove it solved, by finding a route that replays).
+Where it sits: between the checker's command line (:mod:`game.checker.cli`) and the
+two tools that answer, :mod:`game.checker.reachable` (which can prove a map impossible) and
+:mod:`game.checker.solver` (which can prove it solved, by finding a route that replays).
 
 What it teaches: keep what was *proven* apart from what was merely *not found*.
 
 * **Solved**: a route reaches an Exit when the game replays it (the solver's, or the
   designer's own recorded win given with ``--proof``).
 * **Impossible**: no open path of cells joins the spawn and an Exit, or the Exit lies
-  outside everything the player's jumps could touch. Both are over-approximations, so they
-  never call a winnable map impossible. The second is a proof only when it bounds every
-  mechanic the fill met on the way (:attr:`game.levels.reachable.Reach.unbounded`): where
-  one is left unbounded the map is not decided, and the line names the mechanic.
+  outside everything the player's jumps could touch: by the cell fill, or by the
+  pixel-exact reach of :mod:`game.checker.jump_envelope` (a gap or a ledge one pixel past
+  the measured limits). All are over-approximations, so they never call a winnable map
+  impossible, and an Exit any of them leaves out is out of reach. A reach is a proof only
+  when it bounds every mechanic on the way (:attr:`game.checker.reachable.Reach.unbounded`,
+  :attr:`game.checker.jump_envelope.Exact.unbounded`): where one is left unbounded the map
+  is not decided, and the line names the mechanic. Where one tile layer's Solid tiles
+  close the way (taking them away opens it, to the same proof), the line names the layer
+  and points at one of its tiles.
 * **Not decided**: the search spent its budget (or its seconds) without a route, and
   nothing proved the map impossible. That is said as such, with the bound, the work done,
   the furthest place reached and how to search further; it never reads as solved.
@@ -21,13 +26,17 @@ What it teaches: keep what was *proven* apart from what was merely *not found*.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, replace
 from enum import Enum
 from pathlib import Path
 
-from game.levels.reachable import Cell, Reach, open_path, reachable
-from game.levels.solver import Effort, Solution, solve
-from game.levels.wall_layers import closed_cells_by_layer
+from game.checker.jump_envelope import Exact, exact_reach, nearest_reached
+from game.checker.reachable import Cell, Reach, open_path, reachable
+from game.checker.solver import Effort, Solution, solve
+from game.checker.wall_layers import closed_cells_by_layer
+from game.collision.shapes import TileKind
+from game.collision.tile_grid import TileGrid
 from game.sim.campaign import Campaign
 from game.sim.inputs import InputScript
 from game.sim.level import Level
@@ -52,6 +61,7 @@ class Verdict:
     advice: str
     solution: Solution | None = None
     reach: Reach | None = None
+    layer: str | None = None  # the tile layer whose Solid tiles close the way, if one does
 
 
 def _cell_of(level: Level, x: float, y: float) -> Cell:
@@ -61,54 +71,105 @@ def _cell_of(level: Level, x: float, y: float) -> Cell:
 def prove_impossible(level: Level) -> tuple[Verdict | None, Reach | None]:
     """An IMPOSSIBLE verdict if the cells or the reach show no route can exist (else None),
     and the player's reach where it was worked out (the search is guided by its steps)."""
+    impossible, reach, _ = _prove(level)
+    return impossible, reach
+
+
+def _prove(level: Level) -> tuple[Verdict | None, Reach | None, list[str]]:
+    """:func:`prove_impossible`, and the mechanics the pixel-exact reach does not bound
+    (said when nothing proves the map impossible)."""
     world = World(level)
     if not level.exits:
-        return None, None
+        return None, None, []
     sealed = open_path(world)
     if not sealed.touches_exit and not sealed.unbounded:  # (a moved respawn may be anywhere)
-        culprit = _closing_layer(world)
-        blame = (f"; without the Solid tiles of layer '{culprit}' there would be a way"
+        culprit = _closing_layer(world, lambda w: not open_path(w).touches_exit)
+        blame = (f"; without the Solid tiles of layer '{culprit[0]}' there would be a way"
                  if culprit is not None else "")
-        fix = (f"clear the Solid tiles of layer '{culprit}' in the way (or give them another "
+        fix = (f"clear the Solid tiles of layer '{culprit[0]}' in the way (or give them another "
                "class)" if culprit is not None else
                "open a way through the Solid tiles between here and the Exit")
         return Verdict(Kind.IMPOSSIBLE, sealed.nearest_to_exit(),
                        "impossible: no open path joins the spawn and an Exit; Solid tiles "
                        f"close every way{blame}; this is the nearest open place to an Exit",
-                       fix, reach=sealed), None
+                       fix, reach=sealed), None, []
     guide = reachable(world, narrow=True)  # cheaper, and the tighter guide for a search
-    if guide is None or guide.touches_exit:  # (no bound, or past its budget: so is the full)
-        return None, guide
+    reach = guide
+    if guide is not None and not guide.touches_exit:  # (else the full fill does too)
+        reach = reachable(world)
+        if reach is not None and not reach.touches_exit and not reach.unbounded:
+            culprit = _closing_layer(world, _fill_proves)
+            return _out_of_reach(reach.nearest_to_exit(), culprit, reach), reach, []
+    exact = exact_reach(world)
+    if exact.proves:
+        culprit = _closing_layer(world, lambda w: exact_reach(w).proves)
+        found = _out_of_reach(nearest_reached(exact, level), culprit, reach, exact)
+        return found, reach, []
+    return None, reach, exact.unbounded
+
+
+def _fill_proves(world: World) -> bool:
     reach = reachable(world)
-    if reach is not None and not reach.touches_exit and not reach.unbounded:
-        return Verdict(Kind.IMPOSSIBLE, reach.nearest_to_exit(),
+    return reach is not None and not reach.touches_exit and not reach.unbounded
+
+
+def _out_of_reach(tile: Cell | None, culprit: tuple[str, Cell] | None, reach: Reach | None,
+                  exact: Exact | None = None) -> Verdict:
+    """The IMPOSSIBLE verdict of a reach that leaves every Exit out (``exact``: the
+    pixel-exact one, whose bounds the line gives)."""
+    bounds = (f" (it crosses gaps of at most {exact.gap_px} px and lands on ledges at most "
+              f"{exact.ledge_px} px high)" if exact is not None else "")
+    if culprit is not None:
+        name, tile = culprit
+        return Verdict(Kind.IMPOSSIBLE, tile,
                        "impossible: the Exit lies outside everything the player's jumps can "
-                       "touch; this is the nearest place they reach",
-                       "lower the ledges or narrow the gaps on the way (see the player's "
-                       "reach in the summary), or move the Exit",
-                       reach=reach), reach
-    return None, reach
+                       f"touch{bounds}; without the Solid tiles of layer '{name}' there would "
+                       "be a way; this is one of them",
+                       f"clear the Solid tiles of layer '{name}' in the way (or give them "
+                       "another class)", reach=reach, layer=name)
+    return Verdict(Kind.IMPOSSIBLE, tile,
+                   "impossible: the Exit lies outside everything the player's jumps can "
+                   f"touch{bounds}; this is the nearest place they reach",
+                   "lower the ledges or narrow the gaps on the way (see the player's "
+                   "reach in the summary), or move the Exit", reach=reach)
 
 
-def _closing_layer(world: World) -> str | None:
-    """The tile layer whose Solid tiles alone close the way, if taking them away opens it
-    (of several, the one with the fewest such tiles: a stray wall, not the whole ground)."""
+def _closing_layer(world: World, proves: Callable[[World], bool],
+                   ) -> tuple[str, Cell] | None:
+    """The tile layer whose Solid tiles alone close the way, if taking them away makes
+    ``proves`` fail (of several, the one with the fewest such tiles: a stray wall, not the
+    whole ground), and the one of its tiles nearest the spawn."""
     layers = closed_cells_by_layer(world.level.path) if world.level.path.is_file() else []
-    openers: list[tuple[int, int, str]] = []
+    openers: list[tuple[int, int, str, frozenset[Cell]]] = []
     for number, (name, cells) in enumerate(layers):
         others: set[Cell] = set()
         for other, (_, other_cells) in enumerate(layers):
             if other != number:
                 others |= other_cells
         own = frozenset(cells - others)
-        if own and open_path(world, own).touches_exit:
-            openers.append((len(own), number, name))
-    return min(openers)[2] if openers else None
+        if own and not proves(_without(world, own)):
+            openers.append((len(own), number, name, own))
+    if not openers:
+        return None
+    _, _, name, own = min(openers, key=lambda found: found[:2])
+    grid, spawn = world.level.grid, world.spawn
+    here = (spawn.center[0] / grid.tile_w, spawn.center[1] / grid.tile_h)
+    return name, min(sorted(own), key=lambda cell: math.dist(cell, here))
+
+
+def _without(world: World, cells: frozenset[Cell]) -> World:
+    """``world``'s level played again without the Solid tiles in ``cells``."""
+    grid = world.level.grid
+    opened = TileGrid(grid.cols, grid.rows, grid.tile_w, grid.tile_h)
+    for shape in grid.shapes():
+        if shape.kind is not TileKind.SOLID or (shape.col, shape.row) not in cells:
+            opened.put(shape.col, shape.row, shape)
+    return World(replace(world.level, grid=opened), world.tuning)
 
 
 def judge(level: Level, effort: Effort, command: str = "python -m game.levels") -> Verdict:
     """Prove ``level`` impossible, else search it: solved, or honestly not decided."""
-    impossible, reach = prove_impossible(level)
+    impossible, reach, exact_unbounded = _prove(level)
     if impossible is not None:
         return impossible
     # No reach (physics with no bound, or a fill past its budget of steps), or one that
@@ -124,12 +185,16 @@ def judge(level: Level, effort: Effort, command: str = "python -m game.levels") 
     if solution.timed_out and effort.seconds is not None:
         bound = f"its {effort.seconds:g} s"
     elif solution.out_of_budget:
-        bound = f"its budget of {effort.budget:,} moves"
+        whose = "this map's budget" if solution.own_budget else "its budget"
+        bound = f"{whose} of {solution.budget:,} moves"
     else:
         bound = "every move its beams kept"
-    more = max(effort.budget * 4, solution.moves_tried * 4)
+    more = max(solution.budget * 4, solution.moves_tried * 4)
     why = (f"the proof of impossibility does not cover {' nor '.join(unbounded)}"
            if unbounded else "nothing proves the map impossible")
+    if exact_unbounded:
+        why += (f" (the pixel-exact reach, which proves gaps and ledges one pixel past the "
+                f"limits, does not cover {' nor '.join(exact_unbounded)})")
     return Verdict(
         Kind.UNDECIDED, (col, row),
         f"not decided: the search found no route within {bound} ({solution.moves_tried:,} "
@@ -158,7 +223,7 @@ def replay_proof(level: Level, script: InputScript) -> tuple[bool, int]:
 def judge_proof(level: Level, script_path: Path, script: InputScript) -> Verdict:
     """SOLVED when the recorded script wins the level; else a finding about the script.
     ``script``: the script read from ``script_path`` (through the one bounded open,
-    :func:`game.levels.checking.read_proof`)."""
+    :func:`game.checker.checking.read_proof`)."""
     won, ticks = replay_proof(level, script)
     if won:
         return Verdict(Kind.SOLVED, None, f"solved: the recorded win {script_path.name} "

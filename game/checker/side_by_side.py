@@ -41,7 +41,7 @@ from pathlib import Path
 from types import FrameType
 from typing import Any
 
-from game.levels.checking import MapReport, Options, check_map
+from game.checker.checking import MapReport, Options, check_map
 
 POLL_S = 0.2  # how often the parent looks for a worker that died, while it waits
 MAX_NEW_POOLS = 8  # pools started after deaths no map explains; then one map at a time

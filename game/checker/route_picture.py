@@ -1,11 +1,11 @@
 """Draw a solver's route over the whole map: where the player went, and how far it got.
 
 Where it sits: ``python -m game.levels solve MAP --picture PNG`` calls :func:`draw_route`
-with what :func:`game.levels.solver.solve` found. It draws the map's own tiles (the images
+with what :func:`game.checker.solver.solve` found. It draws the map's own tiles (the images
 of its tilesets), each moving platform where it starts with the line its route follows,
 the spawn, the Exits, the path of the hitbox's centre tick by tick, and, when no route was
 found, a ring round the furthest place reached. When a map was proven impossible it also
-tints every cell the proof's fill reached (:mod:`game.levels.reachable`), so the designer
+tints every cell the proof's fill reached (:mod:`game.checker.reachable`), so the designer
 sees where the player's reach ends and the Exit lies outside it.
 
 What it teaches: a picture made from the same data the game plays is the quickest way to

@@ -1,6 +1,6 @@
 """Mistakes a map loads with but a designer would not mean: the checker's extra findings.
 
-Where it sits: :func:`game.levels.checking.check_map` calls :func:`designer_findings` on a
+Where it sits: :func:`game.checker.checking.check_map` calls :func:`designer_findings` on a
 map that loaded. The game plays these maps; the checker says where play goes wrong.
 
 What it teaches: an error names its place and says what happens in play, in Tiled's words.
@@ -21,11 +21,11 @@ What it teaches: an error names its place and says what happens in play, in Tile
   platform, naming the first tile its box meets along the path (a swept box, so a wall
   thinner than a step is not missed).
 * **A Coin no jump reaches**: outside everything the reach fill of
-  :mod:`game.levels.reachable` lets the player touch (an over-approximation, so a Coin it
+  :mod:`game.checker.reachable` lets the player touch (an over-approximation, so a Coin it
   names can never be collected): a warning at the coin.
 * **Objects on hidden layers** still count in the game (Tiled only hides them from view): a
   warning on each object of a class the game knows, so a forgotten Exit is found.
-* And the tile layers' mistakes of :mod:`game.levels.tile_mistakes`.
+* And the tile layers' mistakes of :mod:`game.checker.tile_mistakes`.
 
 Each finding about an object names the object (``object #ID 'NAME'``), so the Tiled
 extension selects the object, not a tile under it; the tile it concerns is kept in the
@@ -40,13 +40,14 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from game.checker import tile_mistakes
+from game.checker.reachable import SLACK_PX, reachable
 from game.collision.aabb import Box
 from game.collision.axis_sweep import ground_under
 from game.collision.free_place import nearest_free_place
 from game.collision.shapes import TileKind, TileShape
 from game.collision.swept import sweep
 from game.collision.tile_grid import TileGrid
-from game.levels import tile_mistakes
 from game.levels.classes import OBJECT_CLASSES
 from game.levels.errors import Findings, LevelError, Place, object_place
 from game.levels.header import MapHeader, read_header
@@ -54,7 +55,6 @@ from game.levels.layers import LayerNode, walk_layers
 from game.levels.loader import load_level
 from game.levels.objects import MapObject, read_objects
 from game.levels.paths import sandbox_for
-from game.levels.reachable import SLACK_PX, reachable
 from game.levels.templates import Templates
 from game.levels.tiledata import decode
 from game.levels.tiledxml import read_tiled_xml
@@ -165,7 +165,7 @@ def _crushing_checkpoints(level: Level, world: World, flags: Sequence[Place],
     there while the platform passes is pushed, into the ground or a wall if it stands on
     one, and crushed at each respawn (a crush costs a life even while blinking), so every
     life goes in as many ticks. Counted while the platform is there, the flag also moves
-    the respawn out of its way (:func:`game.levels.reachable.starts`)."""
+    the respawn out of its way (:func:`game.checker.reachable.starts`)."""
     for flag, where in zip(level.checkpoints, flags, strict=True):
         place, _ = _respawn_place(world, flag)
         for spec, platform in zip(level.platforms, platforms, strict=True):

@@ -1,6 +1,6 @@
 """Which tile layer closes the way? The cells each layer's Solid tiles fill, read again.
 
-Where it sits: :mod:`game.levels.verdict` asks it when no open path joins the spawn and an
+Where it sits: :mod:`game.checker.verdict` asks it when no open path joins the spawn and an
 Exit, to name the layer to look at. The game itself merges every tile layer into one grid
 (:func:`game.levels.solids.build_grid`); here each layer is built on its own, with the same
 readers, so a Solid tile painted on a layer meant for decoration (say one named

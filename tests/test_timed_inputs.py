@@ -1,0 +1,137 @@
+"""The solver's second stage and its budget: inputs timed to the tick where a map needs them
+(a jump held for an exact number of ticks under spikes), and a budget of moves that grows
+with the map and is said when the search stops without a route."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import pytest
+
+from game.checker.reach import DEFAULT_LIMITS
+from game.checker.search_budget import MIN_BUDGET, MOVES_PER_CELL, map_budget
+from game.checker.solver import MOVE_TICKS, PLAIN_SHARE, Effort, replay, solve
+from game.checker.verdict import Kind, judge
+from game.collision.aabb import Box
+from game.sim.inputs import Action
+from game.sim.level import Level
+from game.sim.platforms import PlatformSpec, Route
+from tests.test_verdicts import (
+    EDGE,
+    FLOOR,
+    SPAWN,
+    Script,
+    gap,
+    hold,
+    ledge,
+    pit_under_spikes,
+    play,
+)
+
+# Where the spawn stands within a tick's run (1.5 px) decides where the last step before an
+# edge falls: from these, a run from tick 0 and a jump pressed on the tick given crosses.
+LAST_COYOTE_PLACE, LAST_COYOTE_PRESS = 0.75, 113  # the 76 px gap: the last coyote tick
+COYOTE_PLACE, COYOTE_PRESS = 0.25, 112  # the 74 px gap: a coyote tick
+
+
+def placed(level: Level, offset_px: float) -> Level:
+    """``level`` with its spawn ``offset_px`` to the right."""
+    return dataclasses.replace(level, spawn=Box(SPAWN.x + offset_px, SPAWN.y, SPAWN.w, SPAWN.h))
+
+
+def beside_a_lift(level: Level, width_px: int) -> Level:
+    """``level`` (a gap ``width_px`` wide) with a lift going up and down past the gap, above
+    the player's head: the search cannot ride it across, but a map with moving platforms is
+    searched by beams, which wait for platforms."""
+    lift = PlatformSpec(Route(((EDGE + width_px + 64, FLOOR - 120),
+                               (EDGE + width_px + 64, FLOOR - 60))), 32.0, 8.0, 40.0)
+    return dataclasses.replace(level, platforms=(lift,))
+
+
+def widest_gap() -> Level:
+    return placed(gap(DEFAULT_LIMITS.coyote_gap_px), LAST_COYOTE_PLACE)
+
+
+def coyote_gap() -> Level:
+    return placed(gap(74), COYOTE_PLACE)
+
+
+# Known-truth maps, each with a script that wins it in the game.
+KNOWN: dict[str, tuple[Level, Script]] = {
+    "76 px gap, jump on the last coyote tick": (
+        widest_gap(), hold(jumps=[(LAST_COYOTE_PRESS, 40)])),
+    "76 px gap beside a lift": (
+        beside_a_lift(widest_gap(), DEFAULT_LIMITS.coyote_gap_px),
+        hold(jumps=[(LAST_COYOTE_PRESS, 40)])),
+    "74 px gap, coyote jump": (coyote_gap(), hold(jumps=[(COYOTE_PRESS, 40)])),
+    "74 px gap beside a lift": (beside_a_lift(coyote_gap(), 74),
+                                hold(jumps=[(COYOTE_PRESS, 40)])),
+    "44 px ledge": (ledge(DEFAULT_LIMITS.ledge_px), hold(jumps=[(100, 40)])),
+    "pit under spikes, jump held 7 ticks": (pit_under_spikes(), hold(jumps=[(113, 7)])),
+}
+
+
+# Scripts a tick off the winning one, which lose: the map needs its timing to the tick.
+LOSE: dict[str, list[Script]] = {
+    "76 px gap, jump on the last coyote tick": [
+        hold(jumps=[(LAST_COYOTE_PRESS - 1, 40)]), hold(jumps=[(LAST_COYOTE_PRESS + 1, 40)])],
+    "pit under spikes, jump held 7 ticks": [hold(jumps=[(113, 6)]), hold(jumps=[(113, 8)])],
+}
+
+
+@pytest.mark.parametrize("name", sorted(KNOWN))
+def test_each_known_map_is_won_by_its_script_and_solved_within_its_own_budget(
+        name: str) -> None:
+    level, script = KNOWN[name]
+    assert play(level, script, ticks=2_000).won
+    assert not any(play(level, late, ticks=2_000).won for late in LOSE.get(name, []))
+    solution = solve(level)
+    assert solution.found and solution.own_budget, solution.moves_tried
+    assert solution.moves_tried <= solution.budget
+    assert replay(level.path, solution.held, level)[0]
+
+
+def test_the_pit_under_spikes_is_solved_by_a_jump_held_an_exact_number_of_ticks() -> None:
+    """Its one winning jump is held 7 ticks (test_the_pit_under_spikes_needs_one_exact_jump):
+    the plain moves hold jump for whole moves of 6 ticks and miss it; the second stage
+    releases it on each tick of the rise."""
+    level = pit_under_spikes()
+    assert play(level, hold(jumps=[(113, 7)])).won  # the witness
+    solution = solve(level)
+    assert solution.found and solution.own_budget
+    assert solution.moves_tried > solution.budget * PLAIN_SHARE  # found in the second stage
+    assert replay(level.path, solution.held, level)[0]
+    holds: list[int] = []
+    run = 0  # how long each press of jump was held, in ticks
+    for held in [*solution.held, frozenset()]:
+        if Action.JUMP in held:
+            run += 1
+        elif run:
+            holds, run = [*holds, run], 0
+    assert any(length % MOVE_TICKS for length in holds)
+
+
+def test_a_map_not_decided_says_the_budget_it_was_given_and_the_moves_it_tried() -> None:
+    """The widest gap with the spawn at a whole pixel (winnable, as :func:`widest_gap`
+    shows from a spawn a quarter pixel over, but the search does not line the run up by
+    steering in the air): the search spends exactly this map's own budget, and says it."""
+    level = gap(DEFAULT_LIMITS.coyote_gap_px)
+    verdict = judge(level, Effort())
+    assert verdict.kind is Kind.UNDECIDED and verdict.solution is not None
+    budget = verdict.solution.budget
+    assert budget == MIN_BUDGET  # a small map gets the least budget
+    assert budget <= verdict.solution.moves_tried <= budget + 10 * MOVE_TICKS
+    assert f"this map's budget of {budget:,} moves" in verdict.finding
+    assert f"--budget {verdict.solution.moves_tried * 4}" in verdict.advice
+
+
+def test_a_budget_given_with_budget_n_is_said_as_such() -> None:
+    verdict = judge(gap(64), Effort(budget=5))
+    assert verdict.kind is Kind.UNDECIDED
+    assert "its budget of 5 moves" in verdict.finding
+
+
+def test_the_budget_grows_with_the_cells_a_route_may_pass_through() -> None:
+    assert map_budget(1) == MIN_BUDGET
+    assert map_budget(10_000) == 10_000 * MOVES_PER_CELL
+    assert map_budget(20_000) == 2 * map_budget(10_000)
