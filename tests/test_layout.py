@@ -46,7 +46,8 @@ def test_the_layout_table_names_every_module_of_the_first_four_roles() -> None:
 
 
 def test_the_readme_names_exactly_what_the_game_imports_from_the_reference() -> None:
-    game_side = [m for m in MODULES if m.split(".")[1:2] in (["sim"], ["levels"], ["checker"], ["app"])]
+    game_side = [m for m in MODULES
+                 if m.split(".")[1:2] in (["sim"], ["levels"], ["checker"], ["app"])]
     used = {target.rsplit(".", 1)[1] for m in game_side for target in GRAPH[m]
             if target.startswith("game.collision.")}
     sentence = LAYOUT.split("What the game itself", 1)[1].split("Its moves", 1)[0]

@@ -105,7 +105,7 @@ def audit(level_path: Path) -> Audit:
         full = _contacts_in_full(world, path)
         if found != full:
             seen.contacts_differ.append((tick, found, full))
-        # No coin left in play lies on the path (groupcollide, just before, took them).
+        # No coin left in play lies on the path (step 6, just before, took them).
         if any(crossed(path, coin) for coin in world.coins):
             seen.coins_on_path.append(tick)
         seen.touched += bool(found)

@@ -234,6 +234,7 @@ def test_a_few_platforms_are_found_by_their_routes_as_the_cells_would_find_them(
     by_routes = index.tested_in(x, y, x + w, y + h)
     box = Box(x, y, w, h)
     near_by_routes = index.near([box])
+    assert index.routes_touching(x, y, x + w, y + h) == index.cells_touching(x, y, x + w, y + h)
     solids = [LevelSolids(world.grid, index, without) for without in (None, *world.platforms)]
     found_by_routes = [source.entries_in(x, y, x + w, y + h) for source in solids]
     with pytest.MonkeyPatch.context() as patch:

@@ -15,9 +15,18 @@ import pytest
 
 # Everything the tests use from the game, in one place.
 from game.collision.aabb import RECT_MAX, RECT_MIN, Box, rects_overlap
-from game.collision.axis_sweep import Hit, Move, Side, move_x, move_y, slide_past_ceiling_corner
+from game.collision.axis_sweep import (
+    SKY_LIMIT_PX,
+    Hit,
+    Move,
+    Side,
+    move_body,
+    move_x,
+    move_y,
+    slide_past_ceiling_corner,
+)
 from game.collision.free_place import nearest_free_place, penetration_depth, touching
-from game.collision.shapes import TileKind, TileShape
+from game.collision.shapes import Entry, TileKind, TileShape
 from game.collision.tile_grid import CountedGrid, TileGrid
 from game.sim.inputs import NOTHING, Action, Actions
 from game.sim.platforms import Platform, PlatformIndex, PlatformSpec, Route
@@ -446,7 +455,8 @@ def test_a_jump_leaves_the_ground_and_is_reported_once() -> None:
     player = player_in_the_air()
     player.on_ground = True
     assert player.decide(JUMP, TUNING) is True
-    assert not player.on_ground and player.rising_from_jump
+    assert player.on_ground is False and player.rising_from_jump
+    assert player.coyote_ticks_left == player.jump_buffer_ticks_left == 0   # spent on it
     assert player.vy == -TUNING.jump_speed_px_s + TUNING.gravity_px_s2 * TUNING.tick_s
     player.on_ground = True                                   # as if it landed at once
     assert player.decide(JUMP, TUNING) is False               # still held: no new press
@@ -506,8 +516,8 @@ def test_hitting_a_wall_stops_the_run() -> None:
 
 
 @pytest.mark.parametrize(("side", "vy", "stopped"), [
-    (Side.BOTTOM, 0.5, True), (Side.BOTTOM, -0.5, False),
-    (Side.TOP, -0.5, True), (Side.TOP, 0.5, False)])
+    (Side.BOTTOM, 0.5, True), (Side.BOTTOM, -0.5, False), (Side.BOTTOM, 0.0, False),
+    (Side.TOP, -0.5, True), (Side.TOP, 0.5, False), (Side.TOP, 0.0, False)])
 def test_a_floor_stops_a_fall_and_a_ceiling_a_rise_but_neither_the_other(
         side: Side, vy: float, stopped: bool) -> None:
     player = player_in_the_air()
@@ -522,7 +532,7 @@ def test_a_bounce_is_a_fall_upwards_that_letting_go_does_not_cut() -> None:
     player = player_in_the_air()
     player.on_ground, player.rising_from_jump = True, True
     player.bounce(200.0)
-    assert player.vy == -200.0 and not player.on_ground and not player.rising_from_jump
+    assert player.vy == -200.0 and player.on_ground is False and player.rising_from_jump is False
     player.decide(JUMP, TUNING)          # in the air after a bounce: a press is no jump
     assert player.vy == -200.0 + TUNING.gravity_px_s2 * TUNING.tick_s
 
@@ -535,6 +545,7 @@ def test_a_respawn_starts_still_in_the_air_with_no_jump_remembered() -> None:
     assert player.box == Box(100, 10, 12, 14)
     assert (player.vx, player.vy, player.on_ground, player.rising_from_jump) == (0, 0, False,
                                                                                  False)
+    assert player.coyote_ticks_left == player.jump_buffer_ticks_left == 0
     assert player.decide(JUMP, TUNING) is False               # no coyote time after it
     assert player.invulnerable_ticks_left == 89
     for _ in range(88):
@@ -542,3 +553,175 @@ def test_a_respawn_starts_still_in_the_air_with_no_jump_remembered() -> None:
     assert player.invulnerable
     player.decide(NOTHING, TUNING)
     assert not player.invulnerable
+
+
+def test_a_respawn_asked_for_no_safe_time_gives_none() -> None:
+    player = player_in_the_air()
+    player.respawn(Box(100, 10, 12, 14))
+    assert player.invulnerable_ticks_left == 0 and not player.invulnerable
+
+
+# --- a body's whole move ------------------------------------------------------------------
+
+def test_a_path_crosses_only_a_region_it_overlaps_with_area() -> None:
+    """The path (x 20..40, y 20..30) crosses a region only by strict overlap: a region of no
+    width or height inside it, or one touching any of its four sides, is not crossed; one
+    under a pixel wide or high inside it is."""
+    moves = move_body(TileGrid(10, 10, T, T), Box(20, 20, 10, 10), 10.0, 0.0)
+    assert moves.x.path_edges == (20, 20, 40, 30)
+    for empty in (Box(25, 22, 0, 5), Box(25, 22, 5, 0), Box(25, 22, 0, 0)):
+        assert not moves.crosses(empty), empty
+    for thin in (Box(25, 22, 0.5, 5), Box(25, 22, 5, 0.5)):
+        assert moves.crosses(thin), thin
+    for touching_a_side in (Box(10, 22, 10, 5), Box(40, 22, 5, 5), Box(25, 10, 5, 10),
+                            Box(25, 30, 5, 5)):
+        assert not moves.crosses(touching_a_side), touching_a_side
+
+
+def test_a_move_by_default_lands_on_a_one_way_top_and_slides_past_no_corner() -> None:
+    one_way = grid_of(*((c, 5, Box(c * T, 5 * T, T, T), ONE_WAY) for c in range(10)))
+    landed = move_body(one_way, Box(20, 60, 12, 14), 0.0, 10.0)
+    assert landed.y.box.y == 66 and landed.ground is not None
+    ceiling = grid_of((3, 2, Box(48, 32, 16, 16), SOLID))
+    bumped = move_body(ceiling, Box(63.5, 50, 12, 14), 0.0, -10.0)   # clipped by 0.5 px
+    assert bumped.x.box.x == 63.5 and bumped.y.hit is not None
+    assert bumped.y.hit.side is Side.TOP
+
+
+def test_below_the_map_a_fall_stops_at_its_bottom_edge_and_the_sky_ends_far_above() -> None:
+    grid = TileGrid(10, 10, T, T)
+    fell = move_body(grid, Box(20, 150, 12, 14), 0.0, 30.0)
+    assert fell.y.box.y == grid.height_px and fell.y.hit is None and fell.ground is None
+    assert fell.y.start == Box(20, 150, 12, 14) and fell.y.swept == Box(20, 150, 12, 44)
+    flung = move_body(grid, Box(20, -SKY_LIMIT_PX + 5, 12, 14), 0.0, -30.0)
+    assert flung.y.box == Box(20, -SKY_LIMIT_PX, 12, 14)
+    assert flung.y.swept == Box(20, -SKY_LIMIT_PX - 25, 12, 44)
+    inside = move_body(grid, Box(20, 100, 12, 14), 0.0, 10.0)
+    assert inside.y.box.y == 110
+
+
+def test_a_corner_slide_keeps_the_wall_the_run_hit_and_sweeps_both_steps() -> None:
+    """Running right into a wall while rising into a ceiling's corner: the slide goes left,
+    and the x move still says it hit the wall (so the run stops) and sweeps the run and the
+    slide."""
+    grid = grid_of((3, 2, Box(60, 32, 4, 16), SOLID), (4, 2, Box(64, 32, 12, 16), SOLID),
+                   (4, 3, Box(64, 48, 16, 16), SOLID))
+    moves = move_body(grid, Box(50, 50, 12, 14), 5.0, -10.0, corner_px=4.0)
+    assert moves.x.box.x == 48 and moves.y.box.y == 40 and moves.y.hit is None
+    assert moves.x.hit is not None and moves.x.hit.side is Side.RIGHT and moves.x.hit.face == 64
+    assert moves.x.swept == Box(48, 50, 19, 14)
+
+
+def test_a_fall_onto_a_floor_s_edge_is_no_corner_slide() -> None:
+    """A fall clipping a floor's corner by 3 px is not slid past it, not even onto a
+    higher ledge beside it (which a slide would make the fall end sooner on)."""
+    grid = grid_of((3, 5, Box(48, 80, 16, 16), SOLID), (4, 4, Box(74, 76, 6, 4), SOLID))
+    assert slide_past_ceiling_corner(grid, Box(61, 60, 12, 14), 10.0, 4.0) is None
+
+
+def test_the_gap_between_boxes_is_along_the_farther_axis_and_none_when_they_touch() -> None:
+    box = Box(0, 0, 10, 10)
+    assert box.gap(Box(25, 3, 10, 10)) == 15                  # to the right
+    assert box.gap(Box(-17, 3, 10, 10)) == 7                  # to the left
+    assert box.gap(Box(3, 14, 10, 10)) == 4                   # below
+    assert box.gap(Box(3, -22, 10, 10)) == 12                 # above
+    assert box.gap(Box(16, -30, 10, 10)) == 20                # the farther axis counts
+    assert box.gap(Box(10, 0, 10, 10)) == 0.0 and box.gap(Box(5, 5, 2, 2)) == 0.0
+
+
+def test_a_body_standing_still_or_dropping_through_finds_its_ground_by_the_probe() -> None:
+    """A move that does not fall (none at all, or a rise) asks the probe for the ground:
+    the floor under still feet, none under rising ones, and no one-way top under feet
+    dropping through it."""
+    assert move_body(floor_grid(), Box(20, 66, 12, 14), 3.0, 0.0).ground is not None
+    assert move_body(floor_grid(), Box(20, 66, 12, 14), 0.0, -5.0).ground is None
+    one_way = grid_of(*((c, 5, Box(c * T, 5 * T, T, T), ONE_WAY) for c in range(10)))
+    assert move_body(one_way, Box(20, 66, 12, 14), 0.0, 0.0).ground is not None
+    assert move_body(one_way, Box(20, 66, 12, 14), 0.0, 0.0, through_one_way=True).ground is None
+
+
+def test_a_new_player_is_still_and_remembers_no_jump_no_drop_and_no_safe_time() -> None:
+    player = Player(Box(0, 0, 12, 14), TUNING)
+    assert (player.vx, player.vy, player.facing) == (0.0, 0.0, 1)
+    assert (player.coyote_ticks_left, player.jump_buffer_ticks_left, player.drop_ticks_left,
+            player.invulnerable_ticks_left) == (0, 0, 0, 0)
+    assert player.rising_from_jump is False and not player.invulnerable
+    assert (player.coyote_ticks, player.jump_buffer_ticks) == (TUNING.coyote_ticks,
+                                                               TUNING.jump_buffer_ticks)
+
+
+def test_dropping_through_a_one_way_top_spends_the_jump_press() -> None:
+    player = player_in_the_air()
+    player.on_ground = True
+    player.standing_on = TileShape(Box(0, 14, T, T), ONE_WAY, 0, 1)
+    down_jump: Actions = frozenset({Action.DOWN, Action.JUMP})
+    assert player.decide(down_jump, TUNING) is False
+    assert player.dropping_through and player.jump_buffer_ticks_left == 0
+
+
+def test_a_held_jump_whose_rise_ends_on_exactly_0_px_s_is_no_longer_rising() -> None:
+    """Jump speed 300 px/s and gravity 15 px/s a tick: the rise ends on exactly 0 px/s, and
+    from that tick on the jump can no longer be cut: it is over."""
+    tuning = Tuning(jump_speed_px_s=300.0, gravity_px_s2=900.0)
+    player = Player(Box(0, 0, 12, 14), tuning)
+    player.on_ground = True
+    player.decide(JUMP, tuning)
+    player.on_ground = False
+    while player.vy < 0:
+        assert player.rising_from_jump
+        player.decide(JUMP, tuning)
+    assert player.vy == 0.0 and player.rising_from_jump       # the last rising tick
+    player.decide(JUMP, tuning)
+    assert player.rising_from_jump is False and player.vy == 15.0
+
+
+def test_deep_in_rock_the_nearer_of_two_far_free_places_is_taken() -> None:
+    """Rock everywhere but a few pockets: the body is 96 px from open air off the map's left
+    side and 97.5 px from a pocket up and to the right, and goes to the nearer."""
+    pockets = {(11, 5), (13, 9), (14, 9), (14, 14), (14, 15), (15, 15)}
+    grid = grid_of(*((c, r, Box(c * T, r * T, T, T), SOLID) for c in range(16)
+                     for r in range(16) if (c, r) not in pockets), cols=16, rows=16)
+    assert nearest_free_place(grid, Box(84, 114.25, 12, 14)) == Box(-12, 114.25, 12, 14)
+
+
+def test_a_shape_one_pixel_wide_or_high_collides() -> None:
+    grid = grid_of((2, 2, Box(32, 32, 1, 16), SOLID), (4, 2, Box(64, 32, 16, 1), SOLID))
+    assert [e.shape.col for e in grid.entries_in(0, 0, 160, 160)] == [2, 4]
+
+
+def test_a_fall_onto_a_one_way_top_with_a_solid_below_it_names_the_one_way_top() -> None:
+    grid = grid_of((2, 5, Box(32, 80, 16, 16), ONE_WAY), (2, 6, Box(32, 96, 16, 16), SOLID))
+    move = move_y(grid, Box(34, 60, 12, 14), 40.0)
+    assert move.hit is not None and move.hit.face == 80
+    assert move.hit.shape is not None and move.hit.shape.kind is ONE_WAY
+
+
+class SolidEverywhere:
+    """A source whose every query is answered by a solid a little larger than the region."""
+
+    width_px, height_px = 160, 160
+
+    def entries_in(self, left: float, top: float, right: float, bottom: float,
+                   ) -> list[Entry]:
+        return [Entry.of(TileShape(Box(left - 1, top - 1, right - left + 2, bottom - top + 2),
+                                   SOLID))]
+
+
+def test_where_no_place_is_free_the_search_ends_standing_the_box_on_the_map() -> None:
+    assert nearest_free_place(SolidEverywhere(), Box(30, 40, 12, 14)) == Box(30, -14, 12, 14)
+
+
+def test_a_move_sweeps_what_it_is_given_or_else_its_start_and_step() -> None:
+    start = Box(10, 20, 12, 14)
+    assert Move(start, None, start).swept == start                   # a step of nothing
+    assert Move(start, None, start, 3.0, -4.0).swept == Box(10, 16, 15, 18)
+    given = Box(0, 0, 50, 50)
+    assert Move(start.moved(3, 0), None, start, swept=given).swept == given
+
+
+def test_the_path_of_a_move_left_or_up_runs_from_where_it_ended_to_where_it_started() -> None:
+    start = Box(40, 40, 12, 14)
+    left = move_x(TileGrid(10, 10, T, T), start, -15.0)
+    up = move_y(TileGrid(10, 10, T, T), start, -15.0)
+    assert left.path_edges == (25, 40, 52, 54) and left.path == Box(25, 40, 27, 14)
+    assert up.path_edges == (40, 25, 52, 54)

@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 
 # Everything the tests use from the game, in one place.
 from game.collision.aabb import Box
-from game.collision.axis_sweep import Move, Side, move_x, move_y
+from game.collision.axis_sweep import Move, Side, ground_under, move_body, move_x, move_y
 from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import TileGrid
 
@@ -234,3 +234,23 @@ def test_the_oracle_itself_stops_flush_before_a_wall_and_at_the_map_side() -> No
     assert walk(above, 0.0, 30.0).box.bottom == 3 * T
     assert walk(above, 0.0, 30.0, through_one_way=True).box.bottom == 3 * T + 30
     assert walk(below, 0.0, 30.0).stopped is False
+
+
+@EXAMPLES
+@given(scenes("y"), st.data())
+def test_the_floor_a_fall_found_is_the_ground_the_probe_finds_there(
+        scene: Scene, data: st.DataObject) -> None:
+    """``move_body`` names the floor its fall landed on as the ground without probing again;
+    its plain twin, the one-pixel probe at the box the move ended at, names the same shape
+    (or None) after every move, also when the body started off the half-pixel steps (so
+    its feet are where float arithmetic put them)."""
+    dy = data.draw(steps(scene, "y"))
+    nudge = data.draw(st.sampled_from([0.0, 0.1, 1 / 3, 0.7]))
+    grid = scene.grid()
+    body = scene.body.moved(0.0, nudge)
+    if any(s.kind is TileKind.SOLID and s.box.overlaps(body) for s in scene.shapes):
+        body = scene.body
+    for through_one_way in (False, True):
+        moves = move_body(grid, body, 0.0, dy, through_one_way=through_one_way)
+        probed = ground_under(grid, moves.y.box, through_one_way=through_one_way)
+        assert moves.ground is probed

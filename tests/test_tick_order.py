@@ -10,8 +10,9 @@ import ast
 import inspect
 import re
 import sys
+import textwrap
 from pathlib import Path
-from types import FrameType
+from types import CodeType, FrameType
 from typing import Any
 
 import pytest
@@ -84,18 +85,22 @@ def test_the_tick_and_the_collision_path_carry_no_logging_code() -> None:
 PHASE_LINES = 40  # longest a phase of the tick may be (a method World.step calls)
 STEP_LINES = 60   # longest World.step may be: a table of contents of its phases
 TICK_FILES = 8    # the files of game/ a typical tick of level 1 runs code in
-TICK_LINES = 400  # the lines of game/ the first ticks of level 1 run, all told
+TICK_LINES = 400  # the lines of game/ the first ticks of level 1 run, all told; and the
+# lines of code of the functions they enter (less blank lines, comments and docstrings)
 TRACED_TICKS = 300
+Lines = set[tuple[str, int]]
 
 
-def traced_ticks(ticks: int) -> list[set[tuple[str, int]]]:
+def traced_ticks(ticks: int, entered: set[CodeType] | None = None) -> list[Lines]:
     """Level 1 played by its winning script: the (file, line) pairs of ``game/`` each tick
-    runs, counted by the interpreter's line tracer."""
+    runs, counted by the interpreter's line tracer; the functions of ``game/`` the ticks
+    call are added to ``entered``."""
     script = input_script(ROOT / "tests" / "scripts" / "01-first-steps.txt")
     world = World(load_level(LEVELS_DIR / "01-first-steps.tmx"))
     game = str(ROOT / "game")
-    runs: list[set[tuple[str, int]]] = []
-    ran: set[tuple[str, int]] = set()
+    called: set[CodeType] = set() if entered is None else entered
+    runs: list[Lines] = []
+    ran: Lines = set()
 
     def each_line(frame: FrameType, event: str, _: object) -> Any:
         if event == "line":
@@ -103,7 +108,10 @@ def traced_ticks(ticks: int) -> list[set[tuple[str, int]]]:
         return each_line
 
     def each_call(frame: FrameType, _event: str, _arg: object) -> Any:
-        return each_line if frame.f_code.co_filename.startswith(game) else None
+        if not frame.f_code.co_filename.startswith(game):
+            return None
+        called.add(frame.f_code)
+        return each_line
 
     was = sys.gettrace()
     try:
@@ -119,6 +127,27 @@ def traced_ticks(ticks: int) -> list[set[tuple[str, int]]]:
     return runs
 
 
+def lines_of_code(function: CodeType) -> Lines:
+    """The (file, line) pairs of a function's source that a reader reads as code: its
+    ``def`` to its end, less blank lines, comments and its docstring."""
+    source, first = inspect.getsourcelines(function)
+    body = ast.parse(textwrap.dedent("".join(source))).body[0]
+    assert isinstance(body, (ast.FunctionDef, ast.AsyncFunctionDef))
+    docstring: set[int] = set()
+    if ast.get_docstring(body, clean=False) is not None:
+        docstring = set(range(body.body[0].lineno, (body.body[0].end_lineno or 0) + 1))
+    return {(function.co_filename, first + number - 1)
+            for number, line in enumerate(source, 1)
+            if line.strip() and not line.strip().startswith("#") and number not in docstring}
+
+
+def lines_of_the_functions_entered(entered: set[CodeType]) -> Lines:
+    """The lines of code of every named function entered (a comprehension's lines are its
+    function's): what a reader following the tick reads, whole functions at a time."""
+    return set().union(*(lines_of_code(code) for code in entered
+                         if not code.co_name.startswith("<")))
+
+
 def test_a_tick_is_a_short_table_of_contents_of_short_phases() -> None:
     assert len(inspect.getsource(World.step).splitlines()) <= STEP_LINES
     called = set(re.findall(r"self\.(_\w+)\(", inspect.getsource(World.step)))
@@ -128,11 +157,18 @@ def test_a_tick_is_a_short_table_of_contents_of_short_phases() -> None:
 
 
 def test_a_tick_of_the_first_level_runs_a_few_hundred_lines_in_a_few_files() -> None:
-    """Counts of code run, not times: what a reader following a tick has to read."""
-    runs = traced_ticks(TRACED_TICKS)
-    assert len(set().union(*runs)) <= TICK_LINES
-    files = sorted(len({path for path, _ in ran}) for ran in runs)
-    assert files[len(files) // 2] <= TICK_FILES  # the median tick
+    """Counts of code run, not times: what a reader following a tick has to read. The
+    lines run, and the whole functions they lie in, each at most ``TICK_LINES``, all in
+    at most ``TICK_FILES`` files, on every one of the ticks and on all of them together."""
+    entered: set[CodeType] = set()
+    runs = traced_ticks(TRACED_TICKS, entered)
+    ran = set().union(*runs)
+    assert len(ran) <= TICK_LINES
+    read = lines_of_the_functions_entered(entered)
+    assert ran <= read  # every line run lies in a function read
+    assert len(read) <= TICK_LINES
+    assert len({path for path, _ in read}) <= TICK_FILES
+    assert max(len({path for path, _ in tick}) for tick in runs) <= TICK_FILES
 
 
 def test_the_platforms_query_the_tour_cites_is_the_one_a_tick_asks(

@@ -84,22 +84,22 @@ class Hit(NamedTuple):
 class Move:
     """The result of one axis step: where the box ended, what it hit, where it started.
 
-    :attr:`swept` is the region checked (the start box to the intended box); :attr:`path` is
-    the region actually travelled (the start box to the final box), which is what triggers
-    such as coins and spikes test. Both are worked out on first use and kept, so the coins,
-    the contacts and the hazards of a tick share one path.
+    :attr:`swept` is the region checked (the start box to the intended box), worked out
+    when first read; :attr:`path` is the region actually travelled (the start box to the
+    final box), which is what triggers such as coins and spikes test, and
+    :attr:`path_edges` its left, top, right and bottom edges, as plain floats.
     """
 
-    __slots__ = ("_path", "_swept", "box", "dx", "dy", "hit", "start")
+    __slots__ = ("_swept", "box", "dx", "dy", "hit", "path_edges", "start")
 
     def __init__(self, box: Box, hit: Hit | None, start: Box, dx: float = 0.0,
                  dy: float = 0.0, swept: Box | None = None) -> None:
-        self.box = box
-        self.hit = hit
-        self.start = start
+        self.box, self.hit, self.start = box, hit, start
         self.dx, self.dy = dx, dy  # the step asked for
         self._swept = swept
-        self._path: Edges | None = None
+        (x0, y0, w0, h0), (x1, y1, w1, h1) = start, box
+        self.path_edges: Edges = (min(x0, x1), min(y0, y1), max(x0 + w0, x1 + w1),
+                                  max(y0 + h0, y1 + h1))
 
     def __repr__(self) -> str:
         return f"Move(box={self.box}, hit={self.hit}, start={self.start})"
@@ -109,16 +109,6 @@ class Move:
         if self._swept is None:
             self._swept = self.start.union(self.start.moved(self.dx, self.dy))
         return self._swept
-
-    @property
-    def path_edges(self) -> Edges:
-        """The path's left, top, right and bottom edges, as plain floats."""
-        if self._path is None:
-            x0, y0, w0, h0 = self.start
-            x1, y1, w1, h1 = self.box
-            self._path = (min(x0, x1), min(y0, y1), max(x0 + w0, x1 + w1),
-                          max(y0 + h0, y1 + h1))
-        return self._path
 
     @property
     def path(self) -> Box:
@@ -158,7 +148,7 @@ class BodyMoves(NamedTuple):
             return False
         right, bottom = x + w, y + h
         for move in (self.x, self.y):
-            left, top, p_right, p_bottom = move.path_edges  # worked out once per move
+            left, top, p_right, p_bottom = move.path_edges
             if left < right and x < p_right and top < bottom and y < p_bottom:
                 return True
         return False
@@ -284,16 +274,16 @@ def slide_past_ceiling_corner(solids: ShapeSource, box: Box, dy: float,
     blocked = move_y(solids, box, dy)
     if blocked.hit is None or blocked.hit.side is not Side.TOP or blocked.hit.shape is None:
         return None
-    ceiling = blocked.hit.shape.box
-    shifts = sorted((ceiling.left - box.right, ceiling.right - box.left), key=abs)
-    for shift in shifts:
+    c_left, _, c_width, _ = blocked.hit.shape.box
+    x, _, w, _ = box
+    for shift in sorted((c_left - (x + w), c_left + c_width - x), key=abs):
         if shift == 0 or abs(shift) > max_px:
             continue
         side = move_x(solids, box, shift)
         if side.hit is not None:
             continue
         rise = move_y(solids, side.box, dy)
-        if rise.box.top < blocked.box.top:
+        if rise.box.y < blocked.box.y:
             return CornerSlide(side, rise)
     return None
 

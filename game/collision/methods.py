@@ -11,7 +11,7 @@ What it teaches: **model no more than a scene needs.** A spatial structure costs
 bookkeeping on every move; it only pays once there are enough things to pair up. The level's
 walls are already a grid (the tile map), so bodies ask :class:`~game.collision.tile_grid.TileGrid`;
 the few dozen things a player can touch are tested one by one against the path it swept
-(coins through ``pygame.sprite.groupcollide``; see :meth:`game.sim.world.World.step`). The
+(the coins among them; see :meth:`game.sim.world.World.step`). The
 game makes those choices in that code, once, and reads nothing here. Only a crowd of movers
 (the crate demo, the stress scene, the lab's crowds) needs a broad phase, and asks this
 module which; below the crossover plain brute force is both simpler and faster. The same

@@ -118,20 +118,13 @@ class TileGrid:
         one off the map)."""
         if not (right > left and bottom > top):  # empty (or NaN): overlaps nothing
             return None
-        try:  # floor() and ceil() refuse infinities
-            first_col, last_col = floor(left / self.tile_w), ceil(right / self.tile_w) - 1
-            first_row, last_row = floor(top / self.tile_h), ceil(bottom / self.tile_h) - 1
+        try:  # floor() and ceil() refuse infinities; a region past an edge stops at it
+            first_col, last_col = max(floor(left / self.tile_w), 0), min(
+                ceil(right / self.tile_w), self.cols) - 1
+            first_row, last_row = max(floor(top / self.tile_h), 0), min(
+                ceil(bottom / self.tile_h), self.rows) - 1
         except OverflowError:
             return None
-        # Kept in the map: a region reaching past an edge visits the cells up to that edge.
-        if first_col < 0:
-            first_col = 0
-        if last_col >= self.cols:
-            last_col = self.cols - 1
-        if first_row < 0:
-            first_row = 0
-        if last_row >= self.rows:
-            last_row = self.rows - 1
         if first_col > last_col or first_row > last_row:
             return None
         return first_col, last_col, first_row, last_row

@@ -1,10 +1,9 @@
 """Things the player touches rather than collides with: coins, exits and checkpoints.
 
 Where it sits: steps 6 and 7 of a tick (:meth:`game.sim.world.World.step`). These are triggers,
-not solids: they never stop a body. Coins are taken with ``pygame.sprite.groupcollide``,
-whose ``collided=`` test compares each coin's float ``box`` with the path the player swept
-this tick (its ``rect`` is only the picture); exits and checkpoints go through the contact
-tracker, which reports when a touch starts.
+not solids: they never stop a body. A coin is taken (it leaves its group) when the path the
+player swept this tick crosses its float ``box`` (its ``rect`` is only the picture); exits
+and checkpoints go through the contact tracker, which reports when a touch starts.
 
 Each is a :class:`~game.sim.sprite.BoxSprite`: a coin spins, its picture centred on its box;
 an exit is a flag and a checkpoint a lantern (unlit until reached), each standing on the
@@ -24,6 +23,7 @@ trigger is tested at all.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import pygame
@@ -66,25 +66,16 @@ class TriggerCells:
 
     def reached_by(self, left: float, top: float, right: float, bottom: float) -> bool:
         """Does the region reach a cell that holds a trigger?"""
-        rows_of = self.rows
-        if not rows_of:
-            return False
         try:
             first_col, last_col = math.floor(left / self.tile_w), math.floor(right / self.tile_w)
             first_row, last_row = math.floor(top / self.tile_h), math.floor(bottom / self.tile_h)
         except (ValueError, OverflowError):
             return True  # a region with no cells to name: let the exact tests decide
-        if last_col - first_col + 1 > len(rows_of):
-            # A region wider than all the filed columns: look at those instead.
-            return any(first_col <= col <= last_col and first_row <= row <= last_row
-                       for col, rows in rows_of.items() for row in rows)
-        for col in range(first_col, last_col + 1):
-            rows = rows_of.get(col)
-            if rows is not None:
-                for row in rows:
-                    if first_row <= row <= last_row:
-                        return True
-        return False
+        columns: Iterable[int] = range(first_col, last_col + 1)
+        if last_col - first_col + 1 > len(self.rows):  # wider than all the filed columns
+            columns = [col for col in self.rows if first_col <= col <= last_col]
+        return any(first_row <= row <= last_row
+                   for col in columns for row in self.rows.get(col, ()))
 
 
 class Trigger(BoxSprite):

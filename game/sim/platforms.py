@@ -29,7 +29,6 @@ import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
-from math import ceil, floor
 
 from game.collision.aabb import Box
 from game.collision.axis_sweep import move_x, move_y
@@ -213,11 +212,12 @@ class PlatformIndex:
     this tick. A platform whose route leaves the map is kept apart and tested by every
     query, since no cell holds the part of it out there.
 
-    With a handful of platforms (up to :data:`FEW_PLATFORMS`) a query tests the block of
-    cells of each route directly, which finds the same platforms as walking the cells it
-    covers. Speed, kept: on The Summit (two platforms) the walk made ``World.step`` about a
-    tenth slower (the bench's paired ratio against the plain-float sweep, 3.9x against 3.5x
-    on a loaded machine).
+    Two ways find the platforms near a region, and find the same ones
+    (``tests/test_platforms.py`` compares them): :meth:`routes_touching` tests each route's
+    block of cells, one by one, and :meth:`cells_touching` walks the cells the region
+    covers. With a handful of platforms on the map (up to :data:`FEW_PLATFORMS`) the first
+    does less work (a few route tests against a walk of every cell covered), so it is the
+    one used; with more, the second.
     """
 
     grid: TileGrid
@@ -290,35 +290,39 @@ class PlatformIndex:
         """The platforms whose route region shares a cell with any of the boxes (and those
         off the map, which any box may meet)."""
         found: set[Platform] = set(self.outside)
-        if not self.cells:
-            return found
-        grid, cells, cols = self.grid, self.cells, self.grid.cols
         low_x, low_y, high_x, high_y = self.bounds
-        routes = self.few_routes()
         for x, y, w, h in boxes:
-            if not (w > 0 and h > 0 and x <= high_x and low_x <= x + w and y <= high_y
-                    and low_y <= y + h):
+            if not (self.cells and w > 0 and h > 0 and x <= high_x and low_x <= x + w
+                    and y <= high_y and low_y <= y + h):
                 continue  # nowhere near any route (or NaN)
-            right, bottom = x + w, y + h
-            if routes is not None:
-                # Speed, kept: each route's block of cells tested against the box finds the
-                # platforms the cells it covers hold; walking those cells took 23.3 against
-                # 8.8 µs a call (timeit, the calls of The Summit's first 1,200 ticks).
-                for r_left, r_top, r_right, r_bottom, platform in routes:
-                    if x < r_right and r_left < right and y < r_bottom and r_top < bottom:
-                        found.add(platform)
-                continue
-            block = grid.block_covering(x, y, right, bottom)
-            if block is None:
-                continue
+            if self.few_routes() is not None:
+                found.update(self.routes_touching(x, y, x + w, y + h))
+            else:
+                found.update(self.cells_touching(x, y, x + w, y + h))
+        return found
+
+    def routes_touching(self, left: float, top: float, right: float, bottom: float,
+                        ) -> list[Platform]:
+        """The platforms whose route's block of cells the region overlaps (strictly), in the
+        order of their numbers: each route tested in turn."""
+        return [platform for r_left, r_top, r_right, r_bottom, platform in self.routes
+                if left < r_right and r_left < right and top < r_bottom and r_top < bottom]
+
+    def cells_touching(self, left: float, top: float, right: float, bottom: float,
+                       ) -> list[Platform]:
+        """The platforms filed in the cells the region covers, in the order of their
+        numbers: those cells walked in turn (no further than the cells that hold a
+        platform, so finite and on the map)."""
+        low_x, low_y, high_x, high_y = self.cell_bounds
+        block = self.grid.block_covering(max(left, low_x), max(top, low_y),
+                                         min(right, high_x), min(bottom, high_y))
+        found: set[Platform] = set()
+        if block is not None:
             first_col, last_col, first_row, last_row = block
             for row in range(first_row, last_row + 1):
-                key = row * cols
                 for col in range(first_col, last_col + 1):
-                    filed = cells[key + col]
-                    if filed is not None:
-                        found.update(filed)
-        return found
+                    found.update(self.cells[row * self.cols + col] or ())
+        return sorted(found, key=_number)
 
     @property
     def width_px(self) -> int:
@@ -330,38 +334,17 @@ class PlatformIndex:
 
     def tested_in(self, left: float, top: float, right: float, bottom: float,
                   leaving_out: Platform | None = None) -> list[Platform]:
-        """The platforms a query of the region tests: those filed in the cells it covers,
-        in the order of their numbers, then those off the map; ``leaving_out`` is skipped."""
-        near: list[Platform] = []
+        """The platforms a query of the region tests: those near it on the map
+        (:meth:`routes_touching` with a handful, else :meth:`cells_touching`), in the order
+        of their numbers, then those off the map; ``leaving_out`` is skipped."""
         low_x, low_y, high_x, high_y = self.cell_bounds
         if not (left < high_x and low_x < right and top < high_y and low_y < bottom):
-            pass  # far from every route on the map
+            near: list[Platform] = []  # far from every route on the map
         elif len(self.routes) <= FEW_PLATFORMS:
-            for route_left, route_top, route_right, route_bottom, platform in self.routes:
-                if (left < route_right and route_left < right and top < route_bottom
-                        and route_top < bottom and platform is not leaving_out):
-                    near.append(platform)
+            near = self.routes_touching(left, top, right, bottom)
         else:
-            # The cells covered, within the whole cells that hold every platform (so finite
-            # and on the map). Speed, kept: worked out here; calling the grid's
-            # block_covering made this about a fifth slower (timeit, a query near a platform).
-            tile_w, tile_h, cells, cols = self.tile_w, self.tile_h, self.cells, self.cols
-            first_col = floor((left if left > low_x else low_x) / tile_w)
-            end_col = ceil((right if right < high_x else high_x) / tile_w)
-            first_row = floor((top if top > low_y else low_y) / tile_h)
-            end_row = ceil((bottom if bottom < high_y else high_y) / tile_h)
-            for row in range(first_row, end_row):
-                for col in range(first_col, end_col):
-                    filed = cells[row * cols + col]
-                    if filed is not None:
-                        for platform in filed:
-                            if platform not in near and platform is not leaving_out:
-                                near.append(platform)
-            if len(near) > 1:
-                near.sort(key=_number)
-        if self.outside:
-            near.extend(platform for platform in self.outside if platform is not leaving_out)
-        return near
+            near = self.cells_touching(left, top, right, bottom)
+        return [platform for platform in (*near, *self.outside) if platform is not leaving_out]
 
     def entries_in(self, left: float, top: float, right: float, bottom: float,
                    leaving_out: Platform | None = None) -> list[Entry]:

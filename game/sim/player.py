@@ -77,6 +77,8 @@ class Player(Body):
     def __init__(self, box: Box, tuning: Tuning) -> None:
         super().__init__(box)
         self.corner_correction_px = tuning.corner_correction_px
+        self.coyote_ticks = tuning.coyote_ticks            # the forgiving edges of a jump,
+        self.jump_buffer_ticks = tuning.jump_buffer_ticks  # in ticks, from the tuning's times
         self.facing = 1
         self.coyote_ticks_left = 0       # ticks in which a jump still counts as from the ground
         self.jump_buffer_ticks_left = 0  # ticks in which an early jump press is remembered
@@ -103,9 +105,9 @@ class Player(Body):
         jump_held = Action.JUMP in held
         pressed = jump_held and not self._jump_was_held
         self._jump_was_held = jump_held
-        self.jump_buffer_ticks_left = (tuning.jump_buffer_ticks + 1 if pressed
+        self.jump_buffer_ticks_left = (self.jump_buffer_ticks + 1 if pressed
                                        else max(0, self.jump_buffer_ticks_left - 1))
-        self.coyote_ticks_left = (tuning.coyote_ticks + 1 if self.on_ground
+        self.coyote_ticks_left = (self.coyote_ticks + 1 if self.on_ground
                                   else max(0, self.coyote_ticks_left - 1))
         self.drop_ticks_left = max(0, self.drop_ticks_left - 1)
         self.invulnerable_ticks_left = max(0, self.invulnerable_ticks_left - 1)

@@ -18,8 +18,8 @@ comments in :meth:`World.step` and the README's tour name the same steps in the 
 4. **y pass**: then along y the same way, and is placed; the floor it landed on, or else
    the 1-pixel probe, sets ``on_ground``.
 5. **React**: bodies read what their moves hit (land, bump, turn round).
-6. **Pickups**: coins by ``groupcollide`` with ``dokill``, on the path the player travelled
-   (only on a tick when that path reaches a cell that holds a trigger).
+6. **Pickups**: the coins on the path the player travelled leave their group (``kill``),
+   tested only on a tick when that path reaches a cell that holds a trigger.
 7. **Contacts**: the pairs the player touches; a tracker turns them into start/end events
    (entering the exit completes the level); a checkpoint touched or passed over for the
    first time moves the respawn point there.
@@ -34,7 +34,7 @@ comments in :meth:`World.step` and the README's tour name the same steps in the 
 Before step 1 a squashed enemy's time on screen counts down; after step 9, when a report
 asks for it, the deepest overlap of any body with a solid is measured (it should stay 0).
 
-Solids never go through ``groupcollide``: walls only meet bodies in the movement code.
+Solids never go through a trigger's test: walls only meet bodies in the movement code.
 Each step asks the source of solids named for it in :class:`~game.sim.solids.Lookups`, and
 the moves of steps 3 and 4 are handed on (to the reactions, the triggers, and in
 ``World.moves`` to the overlay), never left on the bodies to be read back.
@@ -289,12 +289,12 @@ class World:
                        else self.platform_index.platform_of(ground))
 
     def _collect_coins(self, path: BodyMoves, events: list[Event]) -> None:
-        """Step 6: coins vanish from their group as the player's path crosses them."""
-        def on_path(_: Player, coin: Coin) -> bool:
-            return crossed(path, coin)
-        for coins in pygame.sprite.groupcollide(
-                self.players, self.coins, False, True, collided=on_path).values():
-            events.extend(Event(EventKind.COIN, coin.value, coin.box) for coin in coins)
+        """Step 6: coins leave their group (``kill``) as the player's path crosses them (a
+        Group is walked over a copy, so a coin may leave it on the way)."""
+        for coin in self.coins:
+            if crossed(path, coin):
+                coin.kill()
+                events.append(Event(EventKind.COIN, coin.value, coin.box))
 
     def _enter_contacts(self, touching: set[tuple[ContactKey, ContactKey]], was: Box,
                         edges: Edges, lookups: Lookups, events: list[Event]) -> None:
@@ -371,9 +371,9 @@ class World:
                          hazards: ShapeSource) -> set[tuple[ContactKey, ContactKey]]:
         """The pairs (player, thing) whose boxes the player's ``path`` overlapped this tick.
 
-        ``edges`` bound the whole path: an enemy outside them is not tested further, and the
-        spikes are looked up (in ``hazards``) only when they reach a cell that holds one;
-        exits and checkpoints are tested only when the path is ``near_trigger``.
+        ``edges`` bound the whole path: the spikes are looked up (in ``hazards``) only when
+        they reach a cell that holds one; exits and checkpoints are tested only when the path
+        is ``near_trigger``.
         """
         pairs: set[tuple[ContactKey, ContactKey]] = set()
         if near_trigger:
@@ -381,12 +381,9 @@ class World:
                       if crossed(path, goal)}
             pairs |= {(PLAYER_KEY, ("checkpoint", number))
                       for number, flag in enumerate(self.checkpoints) if crossed(path, flag)}
-        left, top, right, bottom = edges
-        for number, enemy in self.enemy_by_number.items():
-            x, y, w, h = enemy.box
-            if (x < right and left < x + w and y < bottom and top < y + h and enemy.alive()
-                    and crossed(path, enemy)):
-                pairs.add((PLAYER_KEY, ("enemy", number)))
+        pairs |= {(PLAYER_KEY, ("enemy", number))
+                  for number, enemy in self.enemy_by_number.items()
+                  if enemy.alive() and crossed(path, enemy)}
         if not self.hazard_cells.reached_by(*edges):
             return pairs  # no spike anywhere near the path
         cols = self.grid.cols
