@@ -9,7 +9,7 @@ import dataclasses
 import pytest
 
 from game.checker.reach import DEFAULT_LIMITS
-from game.checker.search_budget import MIN_BUDGET, MOVES_PER_CELL, map_budget
+from game.checker.search_budget import MAX_BUDGET, MIN_BUDGET, MOVES_PER_CELL, map_budget
 from game.checker.solver import MOVE_TICKS, PLAIN_SHARE, Effort, replay, solve
 from game.checker.verdict import Kind, judge
 from game.collision.aabb import Box
@@ -133,5 +133,6 @@ def test_a_budget_given_with_budget_n_is_said_as_such() -> None:
 
 def test_the_budget_grows_with_the_cells_a_route_may_pass_through() -> None:
     assert map_budget(1) == MIN_BUDGET
-    assert map_budget(10_000) == 10_000 * MOVES_PER_CELL
-    assert map_budget(20_000) == 2 * map_budget(10_000)
+    assert map_budget(2_000) == 2_000 * MOVES_PER_CELL
+    assert map_budget(4_000) == 2 * map_budget(2_000)
+    assert map_budget(10**9) == MAX_BUDGET

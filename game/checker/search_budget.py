@@ -15,7 +15,7 @@ needs more, as the search also walks the corridors that lead nowhere.
 
 from __future__ import annotations
 
-MOVES_PER_CELL = 12  # moves (6 ticks each) the search may try for each cell it may reach
+MOVES_PER_CELL = 40  # moves (6 ticks each) the search may try for each cell it may reach
 MIN_BUDGET = 9_000  # moves, however small the map
 MAX_BUDGET = 300_000  # moves, however large the map (about two minutes of a small map's work)
 
