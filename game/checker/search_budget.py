@@ -24,6 +24,6 @@ def map_budget(cells: int) -> int:
     """The moves the search may try on a map whose route may pass through ``cells`` cells.
 
     >>> map_budget(10), map_budget(1_000), map_budget(10**9)
-    (9000, 12000, 300000)
+    (9000, 40000, 300000)
     """
     return max(MIN_BUDGET, min(MAX_BUDGET, MOVES_PER_CELL * cells))
