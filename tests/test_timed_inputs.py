@@ -14,11 +14,12 @@ from game.levels.search_budget import MIN_BUDGET, MOVES_PER_CELL, map_budget
 from game.levels.solver import MOVE_TICKS, PLAIN_SHARE, Effort, replay, solve
 from game.levels.verdict import Kind, judge
 from game.sim.inputs import Action
-from game.sim.level import Level
+from game.sim.level import EnemySpec, Level
 from game.sim.platforms import PlatformSpec, Route
 from tests.test_verdicts import (
     EDGE,
     FLOOR,
+    RIGHT,
     SPAWN,
     Script,
     gap,
@@ -32,6 +33,9 @@ from tests.test_verdicts import (
 # edge falls: from these, a run from tick 0 and a jump pressed on the tick given crosses.
 LAST_COYOTE_PLACE, LAST_COYOTE_PRESS = 0.75, 113  # the 76 px gap: the last coyote tick
 COYOTE_PLACE, COYOTE_PRESS = 0.25, 112  # the 74 px gap: a coyote tick
+# From the spawn at a whole pixel, the run from tick 0 never lines up with the 76 px gap's
+# edge; a hop on the spot (jump for one tick, then run, speeding up in the air) does.
+HOP_TICKS, LINED_UP_PRESS = 1, 116
 
 
 def placed(level: Level, offset_px: float) -> Level:
@@ -56,8 +60,25 @@ def coyote_gap() -> Level:
     return placed(gap(74), COYOTE_PLACE)
 
 
+def hop_then(script: Script) -> Script:
+    """``script``, but on its first :data:`HOP_TICKS` ticks jump on the spot, without a run."""
+    def held(tick: int) -> frozenset[Action]:
+        keys = script(tick)
+        return keys - {RIGHT} if tick < HOP_TICKS else keys
+    return held
+
+
+def far_from_an_enemy(level: Level) -> Level:
+    """``level`` with an enemy standing at the far left, well behind the spawn: it changes
+    nothing, but the pixel-exact proof does not cover a map with enemies."""
+    return dataclasses.replace(level, enemies=(EnemySpec(Box(2, FLOOR - 12, 14, 12), 0.0),))
+
+
 # Known-truth maps, each with a script that wins it in the game.
 KNOWN: dict[str, tuple[Level, Script]] = {
+    "76 px gap from a spawn at a whole pixel, lined up by a hop": (
+        gap(DEFAULT_LIMITS.coyote_gap_px),
+        hop_then(hold(jumps=[(0, HOP_TICKS), (LINED_UP_PRESS, 40)]))),
     "76 px gap, jump on the last coyote tick": (
         widest_gap(), hold(jumps=[(LAST_COYOTE_PRESS, 40)])),
     "76 px gap beside a lift": (
@@ -76,6 +97,10 @@ LOSE: dict[str, list[Script]] = {
     "76 px gap, jump on the last coyote tick": [
         hold(jumps=[(LAST_COYOTE_PRESS - 1, 40)]), hold(jumps=[(LAST_COYOTE_PRESS + 1, 40)])],
     "pit under spikes, jump held 7 ticks": [hold(jumps=[(113, 6)]), hold(jumps=[(113, 8)])],
+    "76 px gap from a spawn at a whole pixel, lined up by a hop": [
+        *(hold(jumps=[(press, 40)]) for press in range(100, 130)),  # no hop: no press wins
+        hop_then(hold(jumps=[(0, HOP_TICKS), (LINED_UP_PRESS - 1, 40)])),
+        hop_then(hold(jumps=[(0, HOP_TICKS), (LINED_UP_PRESS + 1, 40)]))],
 }
 
 
@@ -111,11 +136,24 @@ def test_the_pit_under_spikes_is_solved_by_a_jump_held_an_exact_number_of_ticks(
     assert any(length % MOVE_TICKS for length in holds)
 
 
-def test_a_map_not_decided_says_the_budget_it_was_given_and_the_moves_it_tried() -> None:
-    """The widest gap with the spawn at a whole pixel (winnable, as :func:`widest_gap`
-    shows from a spawn a quarter pixel over, but the search does not line the run up by
-    steering in the air): the search spends exactly this map's own budget, and says it."""
+def test_the_widest_gap_from_a_whole_pixel_is_solved_by_lining_up_the_run() -> None:
+    """No run from the spawn at a whole pixel puts the last tick on the ground where a jump
+    crosses the 76 px gap; the second stage lines the run up with a hop, and its route
+    leaves the ground before the run to the edge."""
     level = gap(DEFAULT_LIMITS.coyote_gap_px)
+    solution = solve(level)
+    assert solution.found and solution.own_budget, solution.moves_tried
+    assert solution.moves_tried > solution.budget * PLAIN_SHARE  # found in the second stage
+    pressed = [tick for tick, held in enumerate(solution.held)
+               if Action.JUMP in held and (tick == 0 or Action.JUMP not in solution.held[tick - 1])]
+    assert len(pressed) >= 2  # the hop, then the jump over the gap
+
+
+def test_a_map_not_decided_says_the_budget_it_was_given_and_the_moves_it_tried() -> None:
+    """A gap one pixel wider than the widest (which no jump crosses), with an enemy far
+    behind the spawn, which the pixel-exact proof does not cover: the search spends
+    exactly this map's own budget, and says it."""
+    level = far_from_an_enemy(gap(DEFAULT_LIMITS.coyote_gap_px + 1))
     verdict = judge(level, Effort())
     assert verdict.kind is Kind.UNDECIDED and verdict.solution is not None
     budget = verdict.solution.budget
