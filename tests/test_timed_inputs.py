@@ -13,18 +13,22 @@ from game.levels.reach import DEFAULT_LIMITS
 from game.levels.search_budget import MIN_BUDGET, MOVES_PER_CELL, map_budget
 from game.levels.solver import MOVE_TICKS, PLAIN_SHARE, Effort, replay, solve
 from game.levels.verdict import Kind, judge
+from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action
 from game.sim.level import EnemySpec, Level
 from game.sim.platforms import PlatformSpec, Route
 from tests.test_verdicts import (
+    BUFFERED_PRESSES,
     EDGE,
     FLOOR,
     RIGHT,
     SPAWN,
+    TUNING,
     Script,
     gap,
     hold,
     ledge,
+    low_spikes_with_one_tile_between,
     pit_under_spikes,
     play,
 )
@@ -173,3 +177,61 @@ def test_the_budget_grows_with_the_cells_a_route_may_pass_through() -> None:
     assert map_budget(1) == MIN_BUDGET
     assert map_budget(10_000) == 10_000 * MOVES_PER_CELL
     assert map_budget(20_000) == 2 * map_budget(10_000)
+
+
+def boxes(level: Level, script: Script, ticks: int = 600) -> tuple[bool, list[Box]]:
+    """Play ``script`` as the game does: won or not, and the player's box after each tick."""
+    campaign = Campaign(level.path, loader=lambda _path: level)
+    route: list[Box] = []
+    for tick in range(ticks):
+        campaign.tick(script(tick))
+        route.append(campaign.world.player.box)
+        if campaign.levels_completed or campaign.outcome is not Outcome.RUNNING:
+            break
+    return campaign.levels_completed > 0, route
+
+
+def first_tick_on_the_ground(level: Level, script: Script, after: int) -> int:
+    """The first tick from ``after`` on which the game reads the player as standing."""
+    campaign = Campaign(level.path, loader=lambda _path: level)
+    for tick in range(after + 200):
+        if tick >= after and campaign.world.player.on_ground:
+            return tick
+        campaign.tick(script(tick))
+    raise AssertionError("the player never landed")
+
+
+def test_a_jump_buffered_before_landing_is_the_jump_pressed_on_the_first_tick_on_the_ground(
+        ) -> None:
+    """No map needs the jump buffer: a jump pressed 1 to ``jump_buffer_ticks`` ticks before
+    landing leaves on the first tick on the ground, and so does one pressed on that tick;
+    the player's box is the same after every tick. So the low spikes' buffered presses
+    (:data:`BUFFERED_PRESSES`) moved to the first tick on the ground win the same way, and
+    a search that presses jump just before landing (``landing_jump``) finds what a press on
+    the ground would."""
+    level = low_spikes_with_one_tile_between()
+    buffered = hold(jumps=[(press, 20) for press in BUFFERED_PRESSES])
+    won, route = boxes(level, buffered)
+    assert won
+    _, second, third = BUFFERED_PRESSES
+    landings = [first_tick_on_the_ground(level, buffered, press) for press in (second, third)]
+    assert landings[0] > second and landings[1] > third  # the presses were in the air
+    on_the_ground = hold(jumps=[(BUFFERED_PRESSES[0], 20),
+                                *((landing, 20 - (landing - press))
+                                  for press, landing in zip((second, third), landings,
+                                                            strict=True))])
+    assert boxes(level, on_the_ground) == (True, route)
+    # every depth of the buffer, on a hop on the spot and its landing
+    flat = gap(64)
+    first = (0, 8)  # a short hop, let go well before the next press
+    hop = hold(right_from=10_000, jumps=[first])
+    landing = first_tick_on_the_ground(flat, hop, 1)
+    assert landing - TUNING.jump_buffer_ticks - 1 > sum(first)
+    won, pressed_there = boxes(flat, hold(right_from=10_000, jumps=[first, (landing, 40)]), 200)
+    assert pressed_there[landing].y < pressed_there[landing - 1].y  # it jumped again there
+    for early in range(1, TUNING.jump_buffer_ticks + 1):
+        script = hold(right_from=10_000, jumps=[first, (landing - early, 40 + early)])
+        assert boxes(flat, script, 200) == (won, pressed_there), early
+    too_early = landing - TUNING.jump_buffer_ticks - 1
+    assert boxes(flat, hold(right_from=10_000, jumps=[first, (too_early, 60)]),
+                 200) != (won, pressed_there)
