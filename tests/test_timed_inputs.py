@@ -1,6 +1,7 @@
 """The solver's second stage and its budget: inputs timed to the tick where a map needs them
-(a jump held for an exact number of ticks under spikes), and a budget of moves that grows
-with the map and is said when the search stops without a route."""
+(a jump held for an exact number of ticks under spikes, a run lined up to the widest gap by a
+hop), why no map needs the jump buffer itself, and a budget of moves that grows with the map
+and is said when the search stops without a route."""
 
 from __future__ import annotations
 

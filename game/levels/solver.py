@@ -34,6 +34,12 @@ What it teaches: a **beam search** over a deterministic simulation.
   held for each number of ticks of the rise; in the air just before landing, jump pressed
   so the jump buffer makes it leave on the first tick on the ground. This stage tells
   apart places :data:`~game.levels.search_key.FINE_PLACE_PX` apart.
+* **Lining a run up.** On the ground the run's speed changes in steps of half a pixel a
+  tick, so from a spawn at a whole pixel every run's last tick on the ground falls on the
+  same few places, and the widest gap may need another. The second stage also tries, once
+  for each edge, a small hop before the run that changes the speed in the air (in finer
+  steps), measures where each hop's run leaves the ground, and tries the edge's jumps from
+  where the one furthest forward lands (:meth:`_Search.line_up`).
 * **The budget grows with the map** (:mod:`game.levels.search_budget`): moves for each
   cell the reach proof's fill reached, unless ``--budget N`` gives one.
 * **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
@@ -469,8 +475,9 @@ class _Search:
                        ) -> Iterator[tuple[float, Snapshot, Node]]:
         """The timed inputs, tried in the search's second stage where they matter: on the
         ground near an edge, jumps pressed on each tick of the run to it and of coyote time
-        after it, each held for each number of ticks of the rise (:meth:`edge_jumps`); in
-        the air just before landing, jump pressed so the jump buffer makes it leave on the
+        after it, each held for each number of ticks of the rise (:meth:`edge_jumps`), and
+        the same after a small hop that lines the run up (:meth:`line_up`); in the air just
+        before landing, jump pressed so the jump buffer makes it leave on the
         first tick on the ground (:meth:`landing_jump`)."""
         snapshot.restore(self.world)
         if self.world.player.on_ground:
