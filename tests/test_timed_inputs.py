@@ -18,13 +18,17 @@ from game.sim.campaign import Campaign, Outcome
 from game.sim.inputs import Action
 from game.sim.level import EnemySpec, Level
 from game.sim.platforms import PlatformSpec, Route
+from tests.maps import level_from_boxes
 from tests.test_verdicts import (
     BUFFERED_PRESSES,
+    COLS,
     EDGE,
     FLOOR,
     RIGHT,
+    ROWS,
     SPAWN,
     TUNING,
+    WIDTH,
     Script,
     gap,
     hold,
@@ -73,6 +77,24 @@ def hop_then(script: Script) -> Script:
     return held
 
 
+def gap_to_the_left(width_px: int) -> Level:
+    """:func:`gap` seen in a mirror: the spawn at a whole pixel on the right, the edge on a
+    tile line, the Exit on the left."""
+    edge = WIDTH - EDGE
+    spawn = Box(WIDTH - SPAWN.right, SPAWN.y, SPAWN.w, SPAWN.h)
+    return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, edge - width_px, 64),
+                                         Box(edge, FLOOR, WIDTH - edge, 64)],
+                            spawn, [Box(32, FLOOR - 16, 16, 16)])
+
+
+def leftwards(script: Script) -> Script:
+    """``script`` with left held wherever it holds right."""
+    def held(tick: int) -> frozenset[Action]:
+        keys = script(tick)
+        return keys - {RIGHT} | {Action.LEFT} if RIGHT in keys else keys
+    return held
+
+
 def far_from_an_enemy(level: Level) -> Level:
     """``level`` with an enemy standing at the far left, well behind the spawn: it changes
     nothing, but the pixel-exact proof does not cover a map with enemies."""
@@ -84,6 +106,9 @@ KNOWN: dict[str, tuple[Level, Script]] = {
     "76 px gap from a spawn at a whole pixel, lined up by a hop": (
         gap(DEFAULT_LIMITS.coyote_gap_px),
         hop_then(hold(jumps=[(0, HOP_TICKS), (LINED_UP_PRESS, 40)]))),
+    "76 px gap to the left from a spawn at a whole pixel, lined up by a hop": (
+        gap_to_the_left(DEFAULT_LIMITS.coyote_gap_px),
+        leftwards(hop_then(hold(jumps=[(0, HOP_TICKS), (LINED_UP_PRESS, 40)])))),
     "76 px gap, jump on the last coyote tick": (
         widest_gap(), hold(jumps=[(LAST_COYOTE_PRESS, 40)])),
     "76 px gap beside a lift": (
@@ -106,6 +131,8 @@ LOSE: dict[str, list[Script]] = {
         *(hold(jumps=[(press, 40)]) for press in range(100, 130)),  # no hop: no press wins
         hop_then(hold(jumps=[(0, HOP_TICKS), (LINED_UP_PRESS - 1, 40)])),
         hop_then(hold(jumps=[(0, HOP_TICKS), (LINED_UP_PRESS + 1, 40)]))],
+    "76 px gap to the left from a spawn at a whole pixel, lined up by a hop": [
+        *(leftwards(hold(jumps=[(press, 40)])) for press in range(100, 130))],
 }
 
 

@@ -146,7 +146,8 @@ MAX_RUN_TICKS = 60  # the run to an edge is given up after this many ticks
 MAX_FALL_TICKS = 120  # a timed jump that has not landed after this many ticks is dropped
 FULL_HOLD_TICKS = 10 * MOVE_TICKS  # jump held this long: the whole rise, on any physics
 PHASES_PER_PX = 8  # an edge's jumps are tried again from a place 1/8 px further along a tick
-LINE_UP_LOOK_PX = 72.0  # a run to an edge is lined up from the first state this close to it
+LINE_UP_LOOK_PX = 160.0  # a run to an edge is lined up from the first state this close to it
+LINE_UP_RUN_TICKS = 150  # a lining-up run that has not reached the edge by then is dropped
 LET_GO_TICKS = 6  # a lining-up hop lets go of the keys in the air for up to this many ticks
 WAIT_TICKS = 30  # the wait macro: stand still this long, for a moving platform to come round
 UNTIL_A_PLATFORM_COMES = 0  # the other wait: stand still until a moving platform comes ...
@@ -503,7 +504,6 @@ class _Search:
 
     def edge_jumps(self, snapshot: Snapshot, node: Node | None, ticks: int,
                    seen: dict[StateKey, int], layer: int, runs: Sequence[Actions] = RUNS,
-                   look_px: float = EDGE_LOOK_PX,
                    ) -> Iterator[tuple[float, Snapshot, Node]]:
         """Once for each edge, direction and place within a tick's run (where the last step
         before the edge falls changes how far a jump carries, to 1/:data:`PHASES_PER_PX`
@@ -519,7 +519,7 @@ class _Search:
         for run in runs:
             snapshot.restore(world)
             direction = 1 if R in run else -1
-            edge = self.edge_ahead(direction, look_px)
+            edge = self.edge_ahead(direction)
             # where the run's last step before the edge falls changes how far a jump carries:
             # each edge is tried from each place within a tick's run, to 1/PHASES_PER_PX px
             phase = math.floor(player.box.x % step * PHASES_PER_PX)
@@ -586,8 +586,9 @@ class _Search:
         the keys for 0 to :data:`LET_GO_TICKS` ticks in the air and then runs on: each is
         played to the edge, and where its last tick on the ground falls is measured
         (:meth:`last_ground_place`). The hop whose last tick on the ground is furthest
-        forward, if further than the plain run's, is played again up to its landing, and
-        the edge's jumps (:meth:`edge_jumps`) are tried from there."""
+        forward, if further than the plain run's, is played again, and the edge's jumps
+        (:meth:`edge_jumps`) are tried from its run, :data:`EARLY_TICKS` before it leaves
+        the ground (or from its landing, if later)."""
         world = self.world
         lives = node.lives_lost if node is not None else 0
         for run in RUNS:
@@ -611,7 +612,8 @@ class _Search:
                         best, chosen = measured, prefix
             if chosen is None:
                 continue
-            # play the best hop again up to its landing, and try the edge's jumps from there
+            # play the best hop and its run again, and try the edge's jumps from the run
+            handover = max(best[1], best[2] - EARLY_TICKS - 2)
             snapshot.restore(world)
             parent = node
             for tick, held in enumerate(chosen, start=1):
@@ -619,21 +621,21 @@ class _Search:
                 self.timeline.write_down(ticks + tick)
                 if tick == len(chosen) or chosen[tick] != held:
                     parent = Node(parent, held, ticks + tick, lives)
-            for tick in range(len(chosen) + 1, best[1] + 1):
+            for tick in range(len(chosen) + 1, handover + 1):
                 world.step(run)
                 self.timeline.write_down(ticks + tick)
-            landed = Node(parent, run, ticks + best[1], lives)
-            yield from self.edge_jumps(Snapshot.of(world), landed, landed.ticks, seen, layer,
-                                       (run,), LINE_UP_LOOK_PX)
+            ran = Node(parent, run, ticks + handover, lives)
+            self.moves_tried += math.ceil(handover / MOVE_TICKS) * self.weight
+            yield from self.edge_jumps(Snapshot.of(world), ran, ran.ticks, seen, layer, (run,))
 
     def last_ground_place(self, snapshot: Snapshot, start: int, run: Actions,
-                          prefix: Sequence[Actions]) -> tuple[float, int] | None:
+                          prefix: Sequence[Actions]) -> tuple[float, int, int] | None:
         """From ``snapshot`` (at tick ``start``), hold ``prefix`` tick by tick, then ``run``
         until the player has landed on the floor it stood on and run off its edge: how far
         along the run the player was on the last tick on the ground (px, larger is further
-        forward) and the ticks until it stood again after ``prefix``. None if the run ended
-        otherwise (a life lost, an Exit, another floor, or no edge within
-        :data:`MAX_RUN_TICKS` of running)."""
+        forward), the tick it stood again after ``prefix`` and the tick it left the ground
+        (counted from ``start``). None if the run ended otherwise (a life lost, an Exit,
+        another floor, or no edge within :data:`LINE_UP_RUN_TICKS` of running)."""
         snapshot.restore(self.world)
         player = self.world.player
         floor = player.box.bottom
@@ -641,7 +643,7 @@ class _Search:
         landed: int | None = None
         place = 0.0
         tick = 0
-        for tick in range(1, len(prefix) + MAX_FALL_TICKS + MAX_RUN_TICKS + 1):
+        for tick in range(1, len(prefix) + MAX_FALL_TICKS + LINE_UP_RUN_TICKS + 1):
             held = prefix[tick - 1] if tick <= len(prefix) else run
             box = player.box
             events = self.world.step(held)
@@ -660,8 +662,8 @@ class _Search:
             elif not player.on_ground:
                 place = box.x * direction  # where the last tick on the ground left it
                 self.moves_tried += math.ceil(tick / MOVE_TICKS) * self.weight
-                return place, landed
-            elif tick > landed + MAX_RUN_TICKS:
+                return place, landed, tick
+            elif tick > landed + LINE_UP_RUN_TICKS:
                 break
         self.moves_tried += math.ceil(tick / MOVE_TICKS) * self.weight
         return None
