@@ -34,6 +34,12 @@ What it teaches: a **beam search** over a deterministic simulation.
   held for each number of ticks of the rise; in the air just before landing, jump pressed
   so the jump buffer makes it leave on the first tick on the ground. This stage tells
   apart places :data:`~game.checker.search_key.FINE_PLACE_PX` apart.
+* **Lining a run up.** On the ground the run's speed changes in steps of half a pixel a
+  tick, so from a spawn at a whole pixel every run's last tick on the ground falls on the
+  same few places, and the widest gap may need another. The second stage also tries, once
+  for each edge, a small hop before the run that changes the speed in the air (in finer
+  steps), measures where each hop's run leaves the ground, and tries the edge's jumps from
+  where the one furthest forward lands (:meth:`_Search.line_up`).
 * **The budget grows with the map** (:mod:`game.checker.search_budget`): moves for each
   cell the reach proof's fill reached, unless ``--budget N`` gives one.
 * **Snapshots** (:mod:`game.sim.snapshot`) make trying a move cheap: restore the parent's
@@ -140,6 +146,9 @@ MAX_RUN_TICKS = 60  # the run to an edge is given up after this many ticks
 MAX_FALL_TICKS = 120  # a timed jump that has not landed after this many ticks is dropped
 FULL_HOLD_TICKS = 10 * MOVE_TICKS  # jump held this long: the whole rise, on any physics
 PHASES_PER_PX = 8  # an edge's jumps are tried again from a place 1/8 px further along a tick
+LINE_UP_LOOK_PX = 160.0  # a run to an edge is lined up from the first state this close to it
+LINE_UP_RUN_TICKS = 150  # a lining-up run that has not reached the edge by then is dropped
+LET_GO_TICKS = 6  # a lining-up hop lets go of the keys in the air for up to this many ticks
 WAIT_TICKS = 30  # the wait macro: stand still this long, for a moving platform to come round
 UNTIL_A_PLATFORM_COMES = 0  # the other wait: stand still until a moving platform comes ...
 COMES_PX = 16.0  # ... this close to the player
@@ -291,6 +300,8 @@ class _Search:
         self.timed = False  # the second stage: timed inputs are tried too
         # (edge cell, direction, place within a tick's run) of each edge's jumps tried
         self.edges_tried: set[tuple[tuple[int, int], int, int]] = set()
+        # (edge cell, direction) of each run to an edge lined up (line_up())
+        self.lined_up: set[tuple[tuple[int, int], int]] = set()
         self.weight = move_weight(level)  # moves of the budget each move counts for
         self.states = 0
         self.pit_penalty = 0.0  # the beams set it: see beams()
@@ -465,23 +476,26 @@ class _Search:
                        ) -> Iterator[tuple[float, Snapshot, Node]]:
         """The timed inputs, tried in the search's second stage where they matter: on the
         ground near an edge, jumps pressed on each tick of the run to it and of coyote time
-        after it, each held for each number of ticks of the rise (:meth:`edge_jumps`); in
-        the air just before landing, jump pressed so the jump buffer makes it leave on the
+        after it, each held for each number of ticks of the rise (:meth:`edge_jumps`), and
+        the same after a small hop that lines the run up (:meth:`line_up`); in the air just
+        before landing, jump pressed so the jump buffer makes it leave on the
         first tick on the ground (:meth:`landing_jump`)."""
         snapshot.restore(self.world)
         if self.world.player.on_ground:
             yield from self.edge_jumps(snapshot, node, ticks, seen, layer)
+            yield from self.line_up(snapshot, node, ticks, seen, layer)
         elif self.lands_soon():
             yield from self.landing_jump(snapshot, node, ticks, seen, layer)
 
-    def edge_ahead(self, direction: int) -> tuple[int, int] | None:
-        """The cell where the floor under the player's feet ends within
-        :data:`EDGE_LOOK_PX` ahead in ``direction`` (+1 right, -1 left), if it does."""
+    def edge_ahead(self, direction: int, look_px: float = EDGE_LOOK_PX,
+                   ) -> tuple[int, int] | None:
+        """The cell where the floor under the player's feet ends within ``look_px`` ahead
+        in ``direction`` (+1 right, -1 left), if it does."""
         world, grid = self.world, self.level.grid
         box = world.player.box
         step = 2.0  # px between the places looked at, narrower than any gap worth a jump
         front = box.right if direction > 0 else box.left
-        for place in range(math.ceil(EDGE_LOOK_PX / step) + 1):
+        for place in range(math.ceil(look_px / step) + 1):
             x = front + direction * (place * step + 0.5)
             if not any(shape.kind is not TileKind.HAZARD
                        for shape in world.solids.shapes_in(Box(x - 0.5, box.bottom, 1.0, 1.0))):
@@ -489,7 +503,7 @@ class _Search:
         return None
 
     def edge_jumps(self, snapshot: Snapshot, node: Node | None, ticks: int,
-                   seen: dict[StateKey, int], layer: int,
+                   seen: dict[StateKey, int], layer: int, runs: Sequence[Actions] = RUNS,
                    ) -> Iterator[tuple[float, Snapshot, Node]]:
         """Once for each edge, direction and place within a tick's run (where the last step
         before the edge falls changes how far a jump carries, to 1/:data:`PHASES_PER_PX`
@@ -502,7 +516,7 @@ class _Search:
         world, player = self.world, self.world.player
         lives = node.lives_lost if node is not None else 0
         step = world.tuning.run_speed_px_s * world.tuning.tick_s  # px a tick at a run
-        for run in RUNS:
+        for run in runs:
             snapshot.restore(world)
             direction = 1 if R in run else -1
             edge = self.edge_ahead(direction)
@@ -560,6 +574,99 @@ class _Search:
                             return
                     if not rising:
                         break  # the rise has ended: holding longer is the same jump
+
+    def line_up(self, snapshot: Snapshot, node: Node | None, ticks: int,
+                seen: dict[StateKey, int], layer: int,
+                ) -> Iterator[tuple[float, Snapshot, Node]]:
+        """Once for each edge within :data:`LINE_UP_LOOK_PX` and direction: line the run up
+        to the edge. On the ground the run's speed changes in steps of half a pixel a tick,
+        so from a spawn at a whole pixel every run's last tick on the ground falls on the
+        same places; in the air it changes in steps of an eighth of a pixel. So before the
+        run, a small hop (jump pressed for one tick, standing or running) that lets go of
+        the keys for 0 to :data:`LET_GO_TICKS` ticks in the air and then runs on: each is
+        played to the edge, and where its last tick on the ground falls is measured
+        (:meth:`last_ground_place`). The hop whose last tick on the ground is furthest
+        forward, if further than the plain run's, is played again, and the edge's jumps
+        (:meth:`edge_jumps`) are tried from its run, :data:`EARLY_TICKS` before it leaves
+        the ground (or from its landing, if later)."""
+        world = self.world
+        lives = node.lives_lost if node is not None else 0
+        for run in RUNS:
+            snapshot.restore(world)
+            direction = 1 if R in run else -1
+            edge = self.edge_ahead(direction, LINE_UP_LOOK_PX)
+            if edge is None or (edge, direction) in self.lined_up:
+                continue
+            self.lined_up.add((edge, direction))
+            best = self.last_ground_place(snapshot, ticks, run, [])
+            if best is None:
+                continue
+            chosen: list[Actions] | None = None
+            for hop in (frozenset({J}), run | {J}):
+                for let_go in range(LET_GO_TICKS + 1):
+                    if self.out_of_time():
+                        return
+                    prefix = [hop, *[frozenset()] * let_go]
+                    measured = self.last_ground_place(snapshot, ticks, run, prefix)
+                    if measured is not None and measured[0] > best[0]:
+                        best, chosen = measured, prefix
+            if chosen is None:
+                continue
+            # play the best hop and its run again, and try the edge's jumps from the run
+            handover = max(best[1], best[2] - EARLY_TICKS - 2)
+            snapshot.restore(world)
+            parent = node
+            for tick, held in enumerate(chosen, start=1):
+                world.step(held)
+                self.timeline.write_down(ticks + tick)
+                if tick == len(chosen) or chosen[tick] != held:
+                    parent = Node(parent, held, ticks + tick, lives)
+            for tick in range(len(chosen) + 1, handover + 1):
+                world.step(run)
+                self.timeline.write_down(ticks + tick)
+            ran = Node(parent, run, ticks + handover, lives)
+            self.moves_tried += math.ceil(handover / MOVE_TICKS) * self.weight
+            yield from self.edge_jumps(Snapshot.of(world), ran, ran.ticks, seen, layer, (run,))
+
+    def last_ground_place(self, snapshot: Snapshot, start: int, run: Actions,
+                          prefix: Sequence[Actions]) -> tuple[float, int, int] | None:
+        """From ``snapshot`` (at tick ``start``), hold ``prefix`` tick by tick, then ``run``
+        until the player has landed on the floor it stood on and run off its edge: how far
+        along the run the player was on the last tick on the ground (px, larger is further
+        forward), the tick it stood again after ``prefix`` and the tick it left the ground
+        (counted from ``start``). None if the run ended otherwise (a life lost, an Exit,
+        another floor, or no edge within :data:`LINE_UP_RUN_TICKS` of running)."""
+        snapshot.restore(self.world)
+        player = self.world.player
+        floor = player.box.bottom
+        direction = 1 if R in run else -1
+        landed: int | None = None
+        place = 0.0
+        tick = 0
+        for tick in range(1, len(prefix) + MAX_FALL_TICKS + LINE_UP_RUN_TICKS + 1):
+            held = prefix[tick - 1] if tick <= len(prefix) else run
+            box = player.box
+            events = self.world.step(held)
+            self.timeline.write_down(start + tick)
+            if any(e.kind in (EventKind.EXIT, EventKind.HURT) for e in events):
+                break
+            if tick <= len(prefix):
+                continue
+            if landed is None:
+                if player.on_ground:
+                    if player.box.bottom != floor:
+                        break  # landed on another floor
+                    landed = tick
+                elif tick > len(prefix) + MAX_FALL_TICKS:
+                    break
+            elif not player.on_ground:
+                place = box.x * direction  # where the last tick on the ground left it
+                self.moves_tried += math.ceil(tick / MOVE_TICKS) * self.weight
+                return place, landed, tick
+            elif tick > landed + LINE_UP_RUN_TICKS:
+                break
+        self.moves_tried += math.ceil(tick / MOVE_TICKS) * self.weight
+        return None
 
     def overhead(self, start: Snapshot, edge: Snapshot) -> bool:
         """Is anything (a ceiling, spikes) above the way from ``start`` to where the run
