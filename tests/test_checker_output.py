@@ -154,6 +154,9 @@ def test_a_bad_proof_is_said_of_the_script_and_its_line_not_of_the_map(
     line = ran.stdout.splitlines()[0]
     assert ran.returncode == 1 and line.startswith(f"{script}: {problem}"), line
     assert " — " in line and "could not be read" not in line
+    summary = ran.stdout.splitlines()[-1]  # the map is not counted as bad for the script
+    assert "not playable" not in summary
+    assert "1 not judged (the --proof script cannot be read)" in summary
 
 
 def layer_named(name: str, attrs: str = "") -> str:

@@ -92,6 +92,7 @@ class MapReport:
     findings: list[Finding] = field(default_factory=list)
     verdict: Kind | None = None  # None: not judged (bad, or --no-solve)
     tuning: Tuning | None = None  # the map's own physics, when they differ from the default
+    proof_unread: bool = False  # the --proof script could not be read: the map is not to blame
     kinds: dict[tuple[str, str], int] = field(default_factory=dict)  # findings of a kind
     more: dict[tuple[str, str], int] = field(default_factory=dict)  # its "and N more" line
 
@@ -206,6 +207,7 @@ def check_map(path: Path, options: Options) -> MapReport:
         message, _, fix = text.partition(" — ")
         report.findings.append(Finding("error", text, "", clipped(message.rpartition(": ")[2]),
                                        clipped(fix)))
+        report.proof_unread = True
     except Exception as error:  # a loader bug still gets a sentence
         report.add("error", "", f"the map could not be read ({type(error).__name__}: "
                    f"{error})", "open it in Tiled and save it again")

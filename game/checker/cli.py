@@ -139,19 +139,25 @@ def reach_summary(own: list[tuple[Path, Tuning]]) -> str:
 
 def _summary(reports: list[MapReport], options: Options) -> tuple[str, int]:
     """The summary line and the exit status."""
-    bad = sum(r.bad and r.verdict is not Kind.IMPOSSIBLE for r in reports)
+    unread = sum(r.proof_unread for r in reports)  # the script's fault, not the map's
+    bad = sum(r.bad and r.verdict is not Kind.IMPOSSIBLE and not r.proof_unread
+              for r in reports)
     counts = {kind: sum(r.verdict is kind for r in reports) for kind in Kind}
     impossible, undecided = counts[Kind.IMPOSSIBLE], counts[Kind.UNDECIDED]
     # "all playable" only when nothing is bad, impossible or left undecided by the search.
-    parts = [] if bad or impossible else ["all playable"] if not undecided else ["none bad"]
+    parts = [] if bad or impossible or unread else (
+        ["all playable"] if not undecided else ["none bad"])
     if bad:
         parts.append(f"{bad} not playable")
+    if unread:
+        parts.append(f"{unread} not judged (the --proof script cannot be read)")
     if options.solve:
         parts += [f"{counts[kind]} {kind.value}" for kind in Kind
                   if counts[kind] or kind is Kind.SOLVED]
     own = [(r.path, r.tuning) for r in reports if r.tuning is not None]
     line = f"checked {len(reports)} map(s): {', '.join(parts)}; {reach_summary(own)}"
-    status = (EXIT_BAD if bad or impossible else EXIT_UNDECIDED if undecided else EXIT_OK)
+    status = (EXIT_BAD if bad or impossible or unread else
+              EXIT_UNDECIDED if undecided else EXIT_OK)
     return line, status
 
 
