@@ -113,8 +113,7 @@ class Move:
         """The path's left, top, right and bottom edges, worked out when first read."""
         if self._path is None:
             (x0, y0, w0, h0), (x1, y1, w1, h1) = self.start, self.box
-            self._path = (min(x0, x1), min(y0, y1), max(x0 + w0, x1 + w1),
-                          max(y0 + h0, y1 + h1))
+            self._path = (min(x0, x1), min(y0, y1), max(x0 + w0, x1 + w1), max(y0 + h0, y1 + h1))
         return self._path
 
     @property
