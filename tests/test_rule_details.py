@@ -295,6 +295,22 @@ def test_the_cells_covering_a_region_follow_strict_overlap_and_stay_in_the_map()
     assert grid.block_covering(0, 70, 10, 80) is None            # below the map only
 
 
+def test_the_block_a_query_visits_is_the_one_max_and_min_would_clamp_to() -> None:
+    """:meth:`TileGrid.block_covering` keeps its block in the map by comparisons; its plain
+    twin does it with max() and min(). Every region with edges among values on, beside,
+    inside and beyond the map's edges (infinities and NaN too) gets the same block."""
+    grid = TileGrid(10, 4, T, T)    # 160 x 64 px
+    edges = [-math.inf, -1e300, -40, -16, -0.5, 0, 0.5, 15.5, 16, 16.5, 63.5, 64, 64.5, 80,
+             159.5, 160, 160.5, 170, 1e300, math.inf, math.nan]
+    blocks = set()
+    for left, top, right, bottom in itertools.product(edges, repeat=4):
+        block = grid.block_covering(left, top, right, bottom)
+        assert block == grid.block_covering_plainly(left, top, right, bottom), (
+            left, top, right, bottom)
+        blocks.add(block)
+    assert (0, 9, 0, 3) in blocks and (9, 9, 3, 3) in blocks and None in blocks
+
+
 def test_a_query_counts_the_cells_it_visits_and_the_shapes_it_tests() -> None:
     plain = floor_grid()
     plain.put(2, 4, TileShape(Box(32, 72, 8, 8), HAZARD, 2, 4))

@@ -90,16 +90,14 @@ class Move:
     :attr:`path_edges` its left, top, right and bottom edges, as plain floats.
     """
 
-    __slots__ = ("_swept", "box", "dx", "dy", "hit", "path_edges", "start")
+    __slots__ = ("_path", "_swept", "box", "dx", "dy", "hit", "start")
 
     def __init__(self, box: Box, hit: Hit | None, start: Box, dx: float = 0.0,
                  dy: float = 0.0, swept: Box | None = None) -> None:
         self.box, self.hit, self.start = box, hit, start
         self.dx, self.dy = dx, dy  # the step asked for
         self._swept = swept
-        (x0, y0, w0, h0), (x1, y1, w1, h1) = start, box
-        self.path_edges: Edges = (min(x0, x1), min(y0, y1), max(x0 + w0, x1 + w1),
-                                  max(y0 + h0, y1 + h1))
+        self._path: Edges | None = None
 
     def __repr__(self) -> str:
         return f"Move(box={self.box}, hit={self.hit}, start={self.start})"
@@ -109,6 +107,14 @@ class Move:
         if self._swept is None:
             self._swept = self.start.union(self.start.moved(self.dx, self.dy))
         return self._swept
+
+    @property
+    def path_edges(self) -> Edges:
+        """The path's left, top, right and bottom edges, worked out when first read."""
+        if self._path is None:
+            (x0, y0, w0, h0), (x1, y1, w1, h1) = self.start, self.box
+            self._path = (min(x0, x1), min(y0, y1), max(x0 + w0, x1 + w1), max(y0 + h0, y1 + h1))
+        return self._path
 
     @property
     def path(self) -> Box:

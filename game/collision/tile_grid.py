@@ -115,7 +115,34 @@ class TileGrid:
                        ) -> CellBlock | None:
         """The in-map cells whose interior the region overlaps, as first and last column and
         first and last row; None when there are none (an empty, infinite or NaN region, or
-        one off the map)."""
+        one off the map).
+
+        Every query of a tick asks this, so it keeps its block in the map by comparisons,
+        not by calls of max() and min(); :meth:`block_covering_plainly` is the same with
+        them, and a test holds the two equal."""
+        if not (right > left and bottom > top):  # empty (or NaN): overlaps nothing
+            return None
+        try:  # floor() and ceil() refuse infinities
+            first_col, last_col = floor(left / self.tile_w), ceil(right / self.tile_w) - 1
+            first_row, last_row = floor(top / self.tile_h), ceil(bottom / self.tile_h) - 1
+        except OverflowError:
+            return None
+        # Kept in the map: a region reaching past an edge visits the cells up to that edge.
+        if first_col < 0:
+            first_col = 0
+        if last_col >= self.cols:
+            last_col = self.cols - 1
+        if first_row < 0:
+            first_row = 0
+        if last_row >= self.rows:
+            last_row = self.rows - 1
+        if first_col > last_col or first_row > last_row:
+            return None
+        return first_col, last_col, first_row, last_row
+
+    def block_covering_plainly(self, left: float, top: float, right: float, bottom: float,
+                               ) -> CellBlock | None:
+        """:meth:`block_covering` with max() and min() keeping the block in the map."""
         if not (right > left and bottom > top):  # empty (or NaN): overlaps nothing
             return None
         try:  # floor() and ceil() refuse infinities; a region past an edge stops at it
