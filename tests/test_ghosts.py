@@ -11,14 +11,26 @@ import pygame
 import pytest
 
 from game.app import window as window_module
+from game.app.assets import Assets
 from game.app.cli import parser
-from game.app.ghosts import GHOSTS_DIR, Ghost, ghost_file, load_replay, recorded, save_ghost
+from game.app.ghosts import (
+    GHOSTS_DIR,
+    Ghost,
+    Replay,
+    draw_ghost,
+    ghost_file,
+    load_replay,
+    recorded,
+    save_ghost,
+)
 from game.app.run import Run, input_script
 from game.app.saves import Attempt, Finish
 from game.app.window import GameWindow
 from game.levels import FIRST_LEVEL, load_level
+from game.sim.camera import VIEW_H_PX, VIEW_W_PX, Camera
 from game.sim.campaign import Campaign
 from game.sim.inputs import Action
+from game.sim.tuning import Tuning
 from tests.maps import write_tmx
 
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
@@ -123,3 +135,30 @@ def test_an_assisted_run_leaves_no_ghost(display: None, tmp_path: Path,
                                          monkeypatch: pytest.MonkeyPatch) -> None:
     ghosts = _finish_in_the_window(tmp_path, monkeypatch, '{"no_damage": true}')
     assert not ghosts.exists()
+
+
+def test_the_ghost_is_drawn_see_through_where_its_run_is_and_not_once_it_is_done(
+        tmp_path: Path, assets: Assets) -> None:
+    map_path = write_tmx(tmp_path, FLOOR_TO_EXIT)
+    level = load_level(map_path, images=False)
+    replay = Replay(Ghost("0" * 64, 2, "0 +right\n"), level, Tuning())
+    camera = Camera()
+    target = pygame.Surface((VIEW_W_PX, VIEW_H_PX))
+    draw_ghost(target, assets, replay, camera)
+    drawn = pygame.image.tobytes(target, "RGB")
+    assert drawn != bytes(len(drawn))  # something was drawn on the black
+    box = replay.world.player.box
+    x, y = round(box.x + box.w / 2), round(box.bottom) - 1  # a pixel of its feet
+    colour = target.get_at((x, y))
+    picture = assets.player_frames[0].get_at((assets.player_frames[0].get_width() // 2,
+                                              assets.player_frames[0].get_height() - 1))
+    if picture.a:  # see-through: darker than the picture's own pixel on black
+        assert sum(colour[:3]) < sum(picture[:3])
+    target.fill((0, 0, 0))
+    draw_ghost(target, assets, replay, camera)
+    assert pygame.image.tobytes(target, "RGB") == drawn  # the same picture every frame
+    while not replay.done:
+        replay.step()
+    target.fill((0, 0, 0))
+    draw_ghost(target, assets, replay, camera)
+    assert pygame.image.tobytes(target, "RGB") == bytes(len(drawn))

@@ -29,6 +29,7 @@ What it teaches:
 
 from __future__ import annotations
 
+import functools
 import hashlib
 from dataclasses import dataclass
 from pathlib import Path
@@ -149,16 +150,21 @@ def load_replay(level: Level, tuning: Tuning, directory: Path | None = None
     return Replay(ghost, level, tuning), problem
 
 
+@functools.lru_cache(maxsize=4)
+def _see_through(picture: pygame.Surface, flipped: bool) -> pygame.Surface:
+    """The ghost's picture: the player's, turned round when ``flipped``, at GHOST_ALPHA;
+    made once for each way it faces, not every frame."""
+    seen = pygame.transform.flip(picture, True, False) if flipped else picture.copy()
+    seen.set_alpha(GHOST_ALPHA)
+    return seen
+
+
 def draw_ghost(target: pygame.Surface, assets: Assets, replay: Replay, camera: Camera) -> None:
     """The ghost's player, see-through, where its run has it now (through the play camera)."""
     if replay.done:
         return
     player = replay.world.player
-    picture = assets.player_frames[0]
-    if player.facing < 0:
-        picture = pygame.transform.flip(picture, True, False)
-    picture = picture.copy()
-    picture.set_alpha(GHOST_ALPHA)
+    picture = _see_through(assets.player_frames[0], player.facing < 0)
     x, y = screen_offset(camera)
     box = player.box
     target.blit(picture, picture.get_rect(midbottom=(round(box.x + box.w / 2) - x,
