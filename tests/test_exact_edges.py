@@ -18,6 +18,7 @@ from game.checker.solver import Effort
 from game.checker.verdict import Kind, judge, prove_impossible
 from game.collision.aabb import Box
 from game.sim.level import EnemySpec, Level
+from game.sim.platforms import PlatformSpec, Route
 from game.sim.tuning import Tuning
 from game.sim.world import World
 from tests.maps import level_from_boxes, write_tmx
@@ -110,13 +111,104 @@ def gap_with(enemies: tuple[EnemySpec, ...] = (), flags: tuple[Box, ...] = ()) -
                             SPAWN, [exit_on(FLOOR)], checkpoints=flags, enemies=enemies)
 
 
-def test_an_enemy_makes_the_exact_proof_give_up_and_the_line_says_so() -> None:
+def test_an_enemy_the_player_can_reach_makes_the_exact_proof_give_up_and_the_line_names_it(
+        ) -> None:
     slime = gap_with(enemies=(EnemySpec(Box(80, FLOOR - 12, 14, 12)),))
-    assert exact_reach(World(slime)).unbounded == ["an enemy (a stomp bounces the player)"]
+    named = ("the enemy starting at tile (5,9) (the player's jumps come within where it can "
+             "go: a stomp bounces the player)")
+    assert exact_reach(World(slime)).unbounded == [named]
     verdict = judge(slime, SMALL)
     assert verdict.kind is Kind.UNDECIDED
     assert "the pixel-exact reach" in verdict.finding
-    assert "does not cover an enemy (a stomp bounces the player)" in verdict.finding
+    assert f"does not cover {named}" in verdict.finding
+
+
+# A trough high over the start side, walled at both ends: an enemy in it cannot leave it,
+# and no jump from the ground below comes near it.
+TROUGH = (Box(16, FLOOR - 80, 96, 16), Box(16, FLOOR - 96, 16, 16), Box(96, FLOOR - 96, 16, 16))
+IN_THE_TROUGH = EnemySpec(Box(48, FLOOR - 92, 14, 12))
+# a lift high over the gap's near edge, its underside more than 50 px over the highest head
+FAR_LIFT = PlatformSpec(Route(((150.0, 20.0), (150.0, 40.0))), 48.0, 8.0, 40.0)
+AT_THE_EDGE = EnemySpec(Box(EDGE - 40, FLOOR - 12, 14, 12))  # walks to the gap's edge
+
+
+def gap_and(width: int, enemies: tuple[EnemySpec, ...] = (),
+            platforms: tuple[PlatformSpec, ...] = ()) -> Level:
+    """A gap ``width`` px wide, with the trough over the start side, and enemies or lifts."""
+    return level_from_boxes(COLS, ROWS, [Box(0, FLOOR, EDGE, 64), *TROUGH,
+                                         Box(EDGE + width, FLOOR, WIDTH - EDGE - width, 64)],
+                            SPAWN, [exit_on(FLOOR)], enemies=enemies, platforms=platforms)
+
+
+@pytest.mark.parametrize("extras", ["enemy", "lift", "both"])
+def test_enemies_and_lifts_out_of_reach_leave_the_exact_proof_standing(extras: str) -> None:
+    """An enemy that cannot leave its trough, or a lift whose whole route is high over the
+    gap's near edge, is never within touching distance of any place the player can be: a gap
+    one pixel past the widest is still proven impossible, with the exact bounds."""
+    enemies = (IN_THE_TROUGH,) if extras in ("enemy", "both") else ()
+    platforms = (FAR_LIFT,) if extras in ("lift", "both") else ()
+    widest = DEFAULT_LIMITS.coyote_gap_px
+    verdict = judge(gap_and(widest + 1, enemies, platforms), SMALL)
+    assert verdict.kind is Kind.IMPOSSIBLE, verdict.finding
+    assert verdict.solution is None  # proven, not searched
+    assert (f"it crosses gaps of at most {widest} px and lands on ledges at most "
+            f"{DEFAULT_LIMITS.ledge_px} px high") in verdict.finding
+
+
+@pytest.mark.parametrize("extras", ["enemy", "lift", "both"])
+def test_the_widest_gap_beside_enemies_and_lifts_out_of_reach_is_in_the_exact_reach(
+        extras: str) -> None:
+    enemies = (IN_THE_TROUGH,) if extras in ("enemy", "both") else ()
+    platforms = (FAR_LIFT,) if extras in ("lift", "both") else ()
+    level = gap_and(DEFAULT_LIMITS.coyote_gap_px, enemies, platforms)
+    exact = exact_reach(World(level))
+    assert exact.touches_exit and not exact.unbounded
+    assert not proven_impossible(level)
+
+
+def test_a_ledge_one_pixel_past_the_highest_beside_a_far_lift_is_proven_impossible() -> None:
+    def with_lift(height: int) -> Level:
+        return replace(ledge(height), platforms=(FAR_LIFT,))
+
+    verdict = judge(with_lift(DEFAULT_LIMITS.ledge_px + 1), SMALL)
+    assert verdict.kind is Kind.IMPOSSIBLE, verdict.finding
+    assert verdict.solution is None
+    assert exact_reach(World(with_lift(DEFAULT_LIMITS.ledge_px))).touches_exit
+
+
+def test_an_enemy_patrolling_to_the_gaps_edge_is_named_and_the_map_not_decided() -> None:
+    """A stomp on an enemy at the edge bounces the player, which the jump envelope does not
+    bound: the gap one pixel past the widest is not decided, and the line names the enemy
+    (a bounce at 200 px/s carries the player about 45 px: the search finds no way over)."""
+    level = gap_and(DEFAULT_LIMITS.coyote_gap_px + 1, (IN_THE_TROUGH, AT_THE_EDGE))
+    exact = exact_reach(World(level))
+    assert exact.unbounded == ["the enemy starting at tile (9,9) (the player's jumps come "
+                               "within where it can go: a stomp bounces the player)"]
+    verdict = judge(level, SMALL)
+    assert verdict.kind is Kind.UNDECIDED, verdict.finding
+    assert "does not cover the enemy starting at tile (9,9)" in verdict.finding
+    assert "tile (3,4)" not in verdict.finding  # the one in the trough is out of reach
+
+
+def test_a_lift_the_player_can_reach_is_named() -> None:
+    near = PlatformSpec(Route(((48.0, FLOOR - 40), (96.0, FLOOR - 40))), 32.0, 8.0, 40.0)
+    exact = exact_reach(World(gap_and(DEFAULT_LIMITS.coyote_gap_px + 1, platforms=(near,))))
+    assert exact.unbounded == ["the moving Platform starting at tile (3,7) (the player's "
+                               "jumps come within its route: it pushes and carries)"]
+
+
+def test_a_respawn_a_lift_may_move_makes_the_exact_proof_give_up() -> None:
+    """A flag the player counts whose respawn place a lift's route crosses: the game puts
+    the player back wherever is free when the flag counts, so the proof says so."""
+    flag = Box(EDGE - 48, FLOOR - 32, 16, 32)
+    lift = PlatformSpec(Route(((EDGE - 56.0, FLOOR - 20), (EDGE - 56.0, FLOOR - 100))),
+                        32.0, 8.0, 40.0)
+    level = level_from_boxes(COLS, ROWS, [Box(0, FLOOR, EDGE, 64),
+                                          Box(EDGE + 77, FLOOR, WIDTH - EDGE - 77, 64)],
+                             SPAWN, [exit_on(FLOOR)], checkpoints=(flag,), platforms=(lift,))
+    (said,) = exact_reach(World(level)).unbounded
+    assert said.startswith("a respawn moved by a moving Platform (the Checkpoint at tile "
+                           "(9,8)")
 
 
 def test_a_respawn_counts_as_a_start_only_once_its_flag_can_be_counted() -> None:

@@ -97,7 +97,7 @@ def leftwards(script: Script) -> Script:
 
 def far_from_an_enemy(level: Level) -> Level:
     """``level`` with an enemy standing at the far left, well behind the spawn: it changes
-    nothing, but the pixel-exact proof does not cover a map with enemies."""
+    nothing, but the player can walk to it, so the pixel-exact proof does not cover it."""
     return dataclasses.replace(level, enemies=(EnemySpec(Box(2, FLOOR - 12, 14, 12), 0.0),))
 
 
@@ -183,8 +183,8 @@ def test_the_widest_gap_from_a_whole_pixel_is_solved_by_lining_up_the_run() -> N
 
 def test_a_map_not_decided_says_the_budget_it_was_given_and_the_moves_it_tried() -> None:
     """A gap one pixel wider than the widest (which no jump crosses), with an enemy far
-    behind the spawn, which the pixel-exact proof does not cover: the search spends
-    exactly this map's own budget, and says it."""
+    behind the spawn, within the player's reach, which the pixel-exact proof does not
+    cover: the search spends exactly this map's own budget, and says it."""
     level = far_from_an_enemy(gap(DEFAULT_LIMITS.coyote_gap_px + 1))
     verdict = judge(level, Effort())
     assert verdict.kind is Kind.UNDECIDED and verdict.solution is not None

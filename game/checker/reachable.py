@@ -159,7 +159,7 @@ def envelope_of(level: Level, tuning: Tuning, enemies: bool = True) -> Envelope 
     """The envelope for ``level`` played with ``tuning``; None when gravity does not bring a
     jump back down (then no bound on the reach can be given). ``enemies``: whether the
     level's enemies add a stomp to the rise (False for an enemy's own envelope, which
-    :func:`enemy_cells` works out)."""
+    :func:`enemy_heads` and :func:`enemy_cells` work out)."""
     if tuning.gravity_px_s2 <= 0 or tuning.max_fall_speed_px_s <= 0:
         return None
     if enemies and level.enemies and tuning.stomp_bounce_px_s > tuning.jump_speed_px_s:
@@ -717,3 +717,23 @@ def enemy_heads(world: World, work: FillWork) -> list[tuple[float, float, float]
             heads.append((col * grid.tile_w - w / 2, (col + 1) * grid.tile_w + w / 2,
                           row * grid.tile_h - h))
     return heads
+
+
+def enemy_cells(world: World, number: int, work: FillWork) -> set[Cell] | None:
+    """Every cell the middle of enemy ``number``'s feet can ever be in: a jump fill of its
+    own body from where the world puts it, at its own speed with its hop (a walker's rise
+    is nothing), walking off every ledge (where the game turns it back), falling, carried
+    and pushed by the platforms as the player is. None when physics give no bound; the
+    steps are counted in ``work`` (:class:`FillTooBig` past its budget)."""
+    spec, level, tuning = world.level.enemies[number], world.level, world.tuning
+    box = world.enemy_by_number[number].box
+    speed = tuning.enemy_speed_px_s if spec.speed_px_s is None else spec.speed_px_s
+    hopper = spec.kind == "hopper"
+    own = replace(tuning, run_speed_px_s=abs(speed),
+                  jump_speed_px_s=tuning.hopper_jump_speed_px_s if hopper else 0.0)
+    envelope = envelope_of(level, own, enemies=False)
+    if envelope is None:
+        return None
+    fill = _JumpFill(level, envelope, box, work)
+    fill.seed(box, _standing(world, box))
+    return fill.run()

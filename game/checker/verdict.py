@@ -11,11 +11,14 @@ What it teaches: keep what was *proven* apart from what was merely *not found*.
 * **Impossible**: no open path of cells joins the spawn and an Exit, or the Exit lies
   outside everything the player's jumps could touch: by the cell fill, or by the
   pixel-exact reach of :mod:`game.checker.jump_envelope` (a gap or a ledge one pixel past
-  the measured limits). All are over-approximations, so they never call a winnable map
-  impossible, and an Exit any of them leaves out is out of reach. A reach is a proof only
-  when it bounds every mechanic on the way (:attr:`game.checker.reachable.Reach.unbounded`,
+  the measured limits; on a map with enemies or moving Platforms, only while none of them
+  can ever come within touching distance of where the player can be). All are
+  over-approximations, so they never call a winnable map impossible, and an Exit any of
+  them leaves out is out of reach. A reach is a proof only when it bounds every mechanic
+  on the way (:attr:`game.checker.reachable.Reach.unbounded`,
   :attr:`game.checker.jump_envelope.Exact.unbounded`): where one is left unbounded the map
-  is not decided, and the line names the mechanic. Where one tile layer's Solid tiles
+  is not decided, and the line names the mechanic (for the pixel-exact reach, the enemy
+  or the platform by the tile it starts at). Where one tile layer's Solid tiles
   close the way (taking them away opens it, to the same proof), the line names the layer
   and points at one of its tiles.
 * **Not decided**: the search spent its budget (or its seconds) without a route, and
