@@ -13,6 +13,7 @@ import pytest
 
 from game.checker.checking import Options, check_map
 from game.checker.jump_envelope import air_envelope, exact_reach
+from game.checker.mechanic_bounds import patrol_span
 from game.checker.reach import DEFAULT_LIMITS, Limits, limits_of
 from game.checker.solver import Effort
 from game.checker.verdict import Kind, judge, prove_impossible
@@ -21,7 +22,7 @@ from game.sim.level import EnemySpec, Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.tuning import Tuning
 from game.sim.world import World
-from tests.maps import level_from_boxes, write_tmx
+from tests.maps import level_from_ascii, level_from_boxes, write_tmx
 from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, SPAWN, WIDTH, exit_on, gap, ledge
 
 # Physics a map may set: floatier; slower with a lower jump (its widest gap ends a fraction
@@ -164,6 +165,93 @@ def test_the_widest_gap_beside_enemies_and_lifts_out_of_reach_is_in_the_exact_re
     exact = exact_reach(World(level))
     assert exact.touches_exit and not exact.unbounded
     assert not proven_impossible(level)
+
+
+def test_a_walker_on_an_open_shelf_it_turns_back_on_leaves_the_exact_proof_standing() -> None:
+    """A shelf high over the start side with no wall at either end: the cell fill lets an
+    enemy walk off it and on to the gap, but a walker turns back at each end of an
+    unbroken floor, so its patrol is all it can reach, far from any jump."""
+    shelf = Box(16, FLOOR - 80, 96, 16)
+    walker = EnemySpec(Box(48, FLOOR - 92, 14, 12))
+    level = level_from_boxes(
+        COLS, ROWS, [Box(0, FLOOR, EDGE, 64), shelf,
+                     Box(EDGE + 77, FLOOR, WIDTH - EDGE - 77, 64)],
+        SPAWN, [exit_on(FLOOR)], enemies=(walker,))
+    world = World(level)
+    assert patrol_span(world, 0) == Box(16 - 1.0, FLOOR - 92, 96 + 2.0, 12)
+    verdict = judge(level, SMALL)
+    assert verdict.kind is Kind.IMPOSSIBLE, verdict.finding
+
+
+def walkers_on(rows: list[str], speed: float | None = None) -> World:
+    """The enemies (``E``) of an ASCII map, standing on the cell's floor, at ``speed``
+    (None: the default)."""
+    level = level_from_ascii(rows)
+    enemies = tuple(replace(e, box=e.box._replace(y=e.box.y + 16 - e.box.h), speed_px_s=speed)
+                    for e in level.enemies)
+    return World(replace(level, enemies=enemies))
+
+
+FLOORS = {
+    "a shelf": ["                ", "   E            ", "  #####         ", "                ",
+                "P               ", "################"],
+    "at the shelf's end": ["                ", "      E         ", "  #####         ",
+                           "                ", "P               ", "################"],
+    "one-way planks": ["                ", "    E           ", "  -----         ",
+                       "                ", "P               ", "################"],
+    "a gap a tile wide": ["                ", "   E            ", "  ###### ####   ",
+                          "                ", "P               ", "################"],
+    "spikes in the floor": ["                ", "  E             ", "  ####^^##      ",
+                            "                ", "P               ", "################"],
+    "a floor to the map's edge": ["                ", "                ", "P     E         ",
+                                  "################"],
+}
+
+
+@pytest.mark.parametrize("floor", sorted(FLOORS))
+@pytest.mark.parametrize("speed", [None, 7.0, 400.0])
+def test_a_walkers_patrol_span_holds_every_place_the_game_puts_it(floor: str,
+                                                                   speed: float | None) -> None:
+    """Played for a minute, a walker the span bounds never leaves it (it turns back at a
+    gap, and at spikes, which are no floor to it)."""
+    world = walkers_on(FLOORS[floor], speed)
+    spans = [patrol_span(world, number) for number in range(len(world.level.enemies))]
+    assert all(span is not None for span in spans)
+    for _ in range(60 * 60):
+        world.step(frozenset())
+        for number, span in enumerate(spans):
+            enemy = world.enemy_by_number[number]
+            assert span is not None and enemy.alive()
+            box = enemy.box
+            assert (span.left <= box.left and box.right <= span.right
+                    and span.top <= box.top and box.bottom <= span.bottom), (box, span)
+
+
+def floor_and_walker(floor: list[Box], walker: Box) -> World:
+    return World(level_from_boxes(16, 6, floor, Box(0, 66, 12, 14), [],
+                                  enemies=(EnemySpec(walker),)))
+
+
+def test_a_walker_on_a_floor_it_may_leave_gets_no_patrol_span() -> None:
+    """In the air; beside a step down half a pixel (it walks on to it); on a wall's side
+    of its floor (the cell fill bounds those); overlapping the floor's end by less than
+    its first step, taken before it looks ahead."""
+    shelf = Box(32, 48, 80, 16)
+    assert patrol_span(floor_and_walker([shelf], Box(48, 36, 14, 12)), 0) is not None
+    assert patrol_span(floor_and_walker([shelf], Box(48, 30, 14, 12)), 0) is None
+    lower = Box(112, 48.5, 32, 16)
+    assert patrol_span(floor_and_walker([shelf, lower], Box(48, 36, 14, 12)), 0) is None
+    wall = Box(96, 32, 16, 16)
+    assert patrol_span(floor_and_walker([shelf, wall], Box(48, 36, 14, 12)), 0) is None
+    assert patrol_span(floor_and_walker([shelf], Box(32 - 14 + 0.25, 36, 14, 12)), 0) is None
+    assert patrol_span(floor_and_walker([shelf], Box(32 - 14 + 0.75, 36, 14, 12)), 0) is not None
+
+
+def test_a_hopper_and_a_walker_going_the_other_way_get_no_patrol_span() -> None:
+    world = walkers_on(FLOORS["a shelf"])
+    hopper = replace(world.level, enemies=(replace(world.level.enemies[0], kind="hopper"),))
+    assert patrol_span(World(hopper), 0) is None
+    assert patrol_span(walkers_on(FLOORS["a shelf"], -30.0), 0) is None
 
 
 def test_a_ledge_one_pixel_past_the_highest_beside_a_far_lift_is_proven_impossible() -> None:

@@ -15,18 +15,22 @@ proof of the walls alone stands. Each bound here is an over-approximation:
 * **A platform** (:func:`platform_bounds`) is always somewhere on its route: its box lies in
   the route's box grown by its size (:func:`~game.sim.platforms.route_region`).
 * **An enemy** (:func:`enemy_bounds`) meets only the walls and the platforms (they push and
-  carry it). Where it can be is the cell fill of its own body
-  (:func:`~game.checker.reachable.enemy_cells`: its own speed and hop, every ledge walked
-  off rather than turned back at, every fall, every ride and push of a platform), each cell
-  its feet can be in grown to the box its body covers there (below the last row, until it
-  is wholly below the map and out of play). A stomp only takes it out of play, which
-  leaves it nowhere. An enemy whose fill cannot be worked out (physics with
-  no bound, or past the fill's budget of steps) is not bounded, and the reach then proves
-  nothing.
-* **Touching distance**: every bound is grown by :data:`TOUCH_PX` on each side, more than
-  the one-pixel probe under the feet (by which the player comes to stand on a platform)
-  and a corner correction's slide sideways (``corner_correction_px``), which look past the
-  body's box.
+  carry it). A walker standing on a floor it cannot leave (:func:`patrol_span`: an unbroken
+  run of tops at its feet, with no wall, no other top and no platform's route in the band
+  its body and its one-pixel look-ahead sweep, and a step shorter than its width) turns
+  back at each end, so it is somewhere on that run, at most two steps past an end (its
+  first step is taken before it looks ahead). Any other enemy can be anywhere in the cell
+  fill of its own body (:func:`~game.checker.reachable.enemy_cells`: its own speed and
+  hop, every ledge walked off rather than turned back at, every fall, every ride and push
+  of a platform), each cell its feet can be in grown to the box its body covers there
+  (below the last row, until it is wholly below the map and out of play). A stomp only
+  takes it out of play, which leaves it nowhere. An enemy whose fill cannot be worked out
+  (physics with no bound, or past the fill's budget of steps) is not bounded, and the
+  reach then proves nothing.
+* **Touching distance**: every bound is grown on each side by a corner correction's slide
+  (``corner_correction_px``) and :data:`TOUCH_PX` more, past all the tick looks at beyond
+  the body's box: the slide sideways, and the one-pixel probe under the feet (by which
+  the player comes to stand on a platform).
 * **Respawns** (:func:`respawn_moved_by`): the game works a counted Checkpoint's respawn
   place out with the platforms where they are then
   (:func:`~game.collision.free_place.nearest_free_place`). Asked of the walls alone, that
@@ -46,8 +50,9 @@ from dataclasses import dataclass
 from game.checker.reachable import FillTooBig, FillWork, enemy_cells
 from game.collision.aabb import Box
 from game.collision.free_place import nearest_free_place
-from game.collision.shapes import Entry, ShapeSource
+from game.collision.shapes import Entry, ShapeSource, TileKind
 from game.collision.tile_grid import TileGrid
+from game.sim.enemy import LEDGE_PROBE_PX
 from game.sim.platforms import route_region
 from game.sim.world import World
 
@@ -99,6 +104,12 @@ def enemy_bounds(world: World, work: FillWork) -> tuple[list[Bound], list[str]]:
     for number, spec in enumerate(world.level.enemies):
         col, row = _tile_of(world, spec.box)
         name = f"the enemy starting at tile ({col},{row})"
+        said = (f"{name} (the player's jumps come within where it can go: a stomp bounces "
+                "the player)")
+        span = patrol_span(world, number)
+        if span is not None:
+            found.append(Bound(said, (_grown(span, margin),)))
+            continue
         try:
             cells = enemy_cells(world, number, work)
         except FillTooBig:
@@ -115,9 +126,48 @@ def enemy_bounds(world: World, work: FillWork) -> tuple[list[Bound], list[str]]:
             tall = grid.tile_h + h + (h if cell_row >= grid.rows - 1 else 0)
             box = Box(left * grid.tile_w - w / 2, top, (right - left) * grid.tile_w + w, tall)
             boxes.append(_grown(box, margin))
-        found.append(Bound(f"{name} (the player's jumps come within where it can go: a stomp "
-                           "bounces the player)", tuple(boxes)))
+        found.append(Bound(said, tuple(boxes)))
     return found, unbounded
+
+
+def patrol_span(world: World, number: int) -> Box | None:
+    """Every place walker ``number`` can be, when it stands on a floor it cannot leave: a
+    run of tops at its feet's height, unbroken, with nothing else (no wall, no other top,
+    no platform's route) in the band its body and its look-ahead sweep along it. None
+    when it is not so (a hopper, a walker in the air, or one whose first step, taken
+    before it looks ahead, could leave the floor)."""
+    spec, tuning, grid = world.level.enemies[number], world.tuning, world.level.grid
+    speed = tuning.enemy_speed_px_s if spec.speed_px_s is None else spec.speed_px_s
+    x, y, w, h = world.enemy_by_number[number].box
+    step, feet = speed * tuning.tick_s, y + h
+    if spec.kind != "walker" or not 0 <= step < w:  # (a negative speed looks back)
+        return None
+    spans = sorted((s.box.left, s.box.right) for s in grid.shapes_in(Box(0, feet, grid.width_px, 1))
+                   if s.kind is not TileKind.HAZARD and s.box.top == feet)
+    runs: list[tuple[float, float]] = []
+    for left, right in spans:
+        if runs and left <= runs[-1][1]:
+            runs[-1] = (runs[-1][0], max(runs[-1][1], right))
+        else:
+            runs.append((left, right))
+    under = [(left, right) for left, right in runs if left < x + w and x < right]
+    if len(under) != 1:
+        return None
+    (left, right), = under
+    if not (x - step + w > left and x + step < right):  # the first step keeps it on
+        return None
+    low, high = min(x, left) - 2 * step, max(x + w, right) + 2 * step
+    band = Box(low - LEDGE_PROBE_PX, feet - h - LEDGE_PROBE_PX,
+               high - low + 2 * LEDGE_PROBE_PX, h + 2 * LEDGE_PROBE_PX)
+    for shape in grid.shapes_in(band):
+        box = shape.box
+        if shape.kind is not TileKind.HAZARD and not (
+                box.top == feet and left <= box.left and box.right <= right):
+            return None
+    near = _grown(band, touch_px(world))
+    if any(route_region(platform).overlaps(near) for platform in world.level.platforms):
+        return None
+    return Box(low, feet - h, high - low, h)
 
 
 def _runs(cells: set[tuple[int, int]]) -> list[tuple[int, int, int]]:
