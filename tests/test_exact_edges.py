@@ -342,6 +342,38 @@ def test_a_wall_out_of_reach_on_a_decoration_layer_is_named_at_its_tile(
     assert finding.tile is not None and finding.tile[0] == 8 and 2 <= finding.tile[1] <= 4
 
 
+def enemy_walled_in_on_a_layer_of_its_own(folder: Path) -> Path:
+    """A floor with a gap five tiles wide (80 px, which the cell fill lets a jump cross),
+    and high over the start a trough whose two walls are painted on a layer of their own,
+    with an enemy in it: the walls keep it from ever coming down to the player."""
+    rows = ["                          ", "                          ",
+            "  E                       ", " ####                     ",
+            "                          ", "                          ",
+            "                          ", " P                    D   ",
+            "###########     ##########"]
+    path = write_tmx(folder, rows)
+    cols = len(rows[0])
+    walls = [[1 if row == 2 and col in (1, 4) else 0 for col in range(cols)]
+             for row in range(len(rows))]
+    data = ",\n".join(",".join(map(str, row)) for row in walls)
+    layer = (f' <layer id="7" name="trough walls" width="{cols}" height="{len(rows)}">\n'
+             f'  <data encoding="csv">\n{data}\n</data>\n </layer>\n')
+    text = path.read_text(encoding="utf-8").replace(' <objectgroup', layer + ' <objectgroup')
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_a_layer_that_only_walls_an_enemy_in_is_not_said_to_close_the_way(
+        tmp_path: Path) -> None:
+    """Without the trough's walls the enemy could come down to the player, so the proof
+    would say nothing; but no way to the Exit opens, so the layer is not named."""
+    report = check_map(enemy_walled_in_on_a_layer_of_its_own(tmp_path), Options(effort=SMALL))
+    (finding,) = [f for f in report.findings if "impossible" in f.text]
+    assert ("impossible: the Exit lies outside everything the player's jumps can touch (it "
+            "crosses gaps of at most 76 px") in finding.text
+    assert "layer '" not in finding.text and finding.layer is None
+
+
 def test_a_ceiling_near_the_take_off_does_not_move_the_edge() -> None:
     """A corner correction leaves the body flush with a ceiling's corner, from where it
     runs on: a roof over the near side, or a block over the spawn, carries no jump further
