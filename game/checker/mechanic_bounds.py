@@ -142,6 +142,8 @@ def patrol_span(world: World, number: int) -> Box | None:
     step, feet = speed * tuning.tick_s, y + h
     if spec.kind != "walker" or not 0 <= step < w:  # (a negative speed looks back)
         return None
+    if (feet - h) + h != feet:  # landed flush, its feet would not be read as on the top
+        return None
     spans = sorted((s.box.left, s.box.right) for s in grid.shapes_in(Box(0, feet, grid.width_px, 1))
                    if s.kind is not TileKind.HAZARD and s.box.top == feet)
     runs: list[tuple[float, float]] = []
