@@ -418,7 +418,9 @@ def _too_many() -> Exact:
 
 
 def starts_of(world: World) -> list[Box]:
-    """The spawn, then each Checkpoint's respawn place (tiles alone: no platforms here)."""
+    """The spawn, then each Checkpoint's respawn place, found with the tiles alone (where a
+    platform could move one, :func:`~game.checker.mechanic_bounds.respawn_moved_by` says
+    so before it is used)."""
     return [start.box for start in starts(world)]
 
 
