@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import random
 
 import pygame
 import pytest
@@ -245,6 +246,38 @@ def test_deep_in_rock_the_search_grows_until_it_reaches_open_air() -> None:
     grid = grid_of(*((c, r, Box(c * T, r * T, T, T), SOLID) for c in range(10)
                      for r in range(10)))
     assert nearest_free_place(grid, Box(70, 70, 4, 4), search_px=4.0) == Box(70, -4, 4, 4)
+
+
+def rock_with_pockets(cols: int, rows: int, pockets: set[tuple[int, int]]) -> TileGrid:
+    """A map of solid cells but the free ones, the pockets."""
+    return grid_of(*((c, r, Box(c * T, r * T, T, T), SOLID) for c in range(cols)
+                     for r in range(rows) if (c, r) not in pockets), cols=cols, rows=rows)
+
+
+def test_deep_in_rock_a_place_found_is_taken_only_once_none_can_be_nearer() -> None:
+    """Rock but two cells: the first window to hold a free place holds one 169 px away, in
+    the cell (18, 10); the search widens until it is sure, and the nearest is 161.5 px away,
+    off the map's left side."""
+    grid = rock_with_pockets(32, 32, {(18, 10), (19, 4)})
+    assert nearest_free_place(grid, Box(149.5, 259.25, 12, 14)) == Box(-12, 259.25, 12, 14)
+
+
+def test_the_search_finds_what_a_search_of_every_wall_finds() -> None:
+    """Random rock maps with a few free cells, random boxes in them: from a small first
+    window the search ends on the same place as from a first window holding the whole map,
+    which tries every wall's faces."""
+    rng = random.Random(1)
+    for _ in range(12):
+        cols, rows = rng.randint(10, 16), rng.randint(10, 16)
+        pockets = {(rng.randrange(cols), rng.randrange(rows)) for _ in range(rng.randint(3, 8))}
+        grid = rock_with_pockets(cols, rows, pockets)
+        for _ in range(3):
+            w, h = rng.randint(4, 24), rng.randint(4, 24)
+            box = Box(rng.randrange(4 * (grid.width_px - w)) / 4,
+                      rng.randrange(4 * (grid.height_px - h)) / 4, w, h)
+            every_wall = nearest_free_place(grid, box, max(grid.width_px, grid.height_px))
+            first_px = rng.choice([1.0, 4.0, 16.0, 64.0])
+            assert nearest_free_place(grid, box, first_px) == every_wall, (pockets, box)
 
 
 # --- The tile grid ------------------------------------------------------------------------
