@@ -649,6 +649,22 @@ def test_below_the_map_a_fall_stops_at_its_bottom_edge_and_the_sky_ends_far_abov
     assert inside.y.box.y == 110
 
 
+def test_a_move_the_void_or_the_sky_cuts_short_still_says_what_stopped_it() -> None:
+    """A platform whose route leaves the map can lie below its bottom edge or past the sky:
+    a move that ends on it there is held at that edge, and still names the platform as what
+    stopped it."""
+    grid = TileGrid(10, 10, T, T)
+    below, above = (Platform(PlatformSpec(Route(((0.0, y),)), 160, 16, 0.0), n)
+                    for n, y in ((0, 200.0), (1, -SKY_LIMIT_PX - 100)))
+    solids = LevelSolids(grid, PlatformIndex(grid, [below, above]))
+    fell = move_body(solids, Box(20, 150, 12, 14), 0.0, 60.0)
+    assert fell.y.box.y == grid.height_px
+    assert fell.y.hit == Hit(Side.BOTTOM, 200.0, below.shape)
+    flung = move_body(solids, Box(20, 0, 12, 14), 0.0, -2 * SKY_LIMIT_PX)
+    assert flung.y.box.y == -SKY_LIMIT_PX
+    assert flung.y.hit == Hit(Side.TOP, -SKY_LIMIT_PX - 84, above.shape)
+
+
 def test_a_corner_slide_keeps_the_wall_the_run_hit_and_sweeps_both_steps() -> None:
     """Running right into a wall while rising into a ceiling's corner: the slide goes left,
     and the x move still says it hit the wall (so the run stops) and sweeps the run and the
