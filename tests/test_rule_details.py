@@ -280,6 +280,24 @@ def test_the_search_finds_what_a_search_of_every_wall_finds() -> None:
             assert nearest_free_place(grid, box, first_px) == every_wall, (pockets, box)
 
 
+def test_a_way_out_just_past_the_first_window_is_taken_when_it_is_the_nearer() -> None:
+    """All rock, a box 4 px wide and 14 high 82 px from the map's left side and 76 px from
+    its top: the way out up, 90 px, is in the first window (64 px round the box) and the way
+    out left, 86 px, only in the next; the nearer wins. Turned a quarter, the same holds
+    with the two sides swapped."""
+    grid = rock_with_pockets(20, 20, set())
+    assert nearest_free_place(grid, Box(82, 76, 4, 14)) == Box(-4, 76, 4, 14)
+    assert nearest_free_place(grid, Box(76, 82, 14, 4)) == Box(76, -4, 14, 4)
+
+
+def test_a_box_larger_than_the_map_goes_to_the_nearest_place_beyond_the_window() -> None:
+    """A box 400 px square over a map 32 px square with one solid tile: once the window
+    holds the whole map, the nearest place it found (116 px right, as near as 116 px down
+    and higher) is the answer, though it lies farther than the window reaches."""
+    grid = grid_of((0, 0, Box(0, 0, T, T), SOLID), cols=2, rows=2)
+    assert nearest_free_place(grid, Box(-100, -100, 400, 400)) == Box(16, -100, 400, 400)
+
+
 # --- The tile grid ------------------------------------------------------------------------
 
 @pytest.mark.parametrize(("col", "row"), [(-1, 0), (0, -1), (10, 0), (0, 4)])
