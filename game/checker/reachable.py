@@ -255,8 +255,7 @@ def starts(world: World) -> list[Start]:
         if not any(region.overlaps(standing) for region in regions):
             found.append(Start(place, columns))
             continue
-        area = moved_respawns(grid, standing, regions, max(
-            [max(spec.width_px, spec.height_px) for spec in level.platforms]))
+        area = moved_respawns(grid, standing, regions)
         col, row = math.floor(flag.x / grid.tile_w), math.floor(flag.y / grid.tile_h)
         found.append(Start(place, columns, None if area is not None else
                            f"a respawn moved by a moving Platform (the Checkpoint at tile "
@@ -265,35 +264,37 @@ def starts(world: World) -> list[Start]:
     return found
 
 
-def moved_respawns(grid: TileGrid, standing: Box, regions: list[Box],
-                   platform_px: float) -> Box | None:
+def moved_respawns(grid: TileGrid, standing: Box, regions: list[Box]) -> Box | None:
     """The range of top-left corners where the game may put a player coming back to a flag
     whose place (``standing``) some platforms' routes cross (``regions``, each route's box
-    grown by its platform's size; ``platform_px``: the longest side of a platform), or
-    None if no bound is found.
+    grown by its platform's size), or None if no bound is found.
 
     The game (:func:`~game.collision.free_place.nearest_free_place`, with the platforms
-    where they are when the flag counts) widens its window round the place until some
-    candidate in it is free, each coordinate where it was or flush with a face of a wall
-    touching the window. Once the window holds a candidate of the tiles' faces alone that is
-    free of the tiles and of every route, it is free wherever the platforms are: the game
-    stops there or sooner, with each coordinate within the window, a wall's size and the
-    body's own size of where it was."""
+    where they are when the flag counts) tries, in a window it widens round the place, each
+    coordinate where it was or flush with a face of a wall in the window, and stops at the
+    nearest free place, or at the latest at the first window that holds the whole map, at
+    the nearest place it tried there. A candidate of the tiles' faces alone, in one of those
+    windows, that is free of the tiles and of every route is free wherever the platforms
+    are: the game stops no farther from the place than that candidate, in x and in y."""
     w, h = standing.w, standing.h
-    search, limit = 64.0, max(grid.width_px, grid.height_px) + w + h  # as the game's
-    while search <= 2 * limit:
+    search, whole_map = 64.0, max(grid.width_px, grid.height_px)  # as the game's
+    while True:
         window = Box(standing.x - search, standing.y - search, w + 2 * search, h + 2 * search)
         tiles = [s.box for s in grid.shapes_in(window) if s.kind is TileKind.SOLID]
         xs = {standing.x} | {b.left - w for b in tiles} | {b.right for b in tiles}
         ys = {standing.y} | {b.top - h for b in tiles} | {b.bottom for b in tiles}
-        around = Box(window.x - w, window.y - h, window.w + 2 * w, window.h + 2 * h)
+        # a candidate ends at most a tile and its own size past the window
+        around = Box(window.x - w - grid.tile_w, window.y - h - grid.tile_h,
+                     window.w + 2 * (w + grid.tile_w), window.h + 2 * (h + grid.tile_h))
         walls = [*regions, *(s.box for s in grid.shapes_in(around) if s.kind is TileKind.SOLID)]
-        if any(not any(Box(x, y, w, h).overlaps(b) for b in walls) for x in xs for y in ys):
-            reach_x = search + max(platform_px, grid.tile_w) + w
-            reach_y = search + max(platform_px, grid.tile_h) + h
-            return Box(standing.x - reach_x, standing.y - reach_y, 2 * reach_x, 2 * reach_y)
+        free = [math.hypot(x - standing.x, y - standing.y) for x in xs for y in ys
+                if not any(Box(x, y, w, h).overlaps(b) for b in walls)]
+        if free:
+            reach = min(free)
+            return Box(standing.x - reach, standing.y - reach, 2 * reach, 2 * reach)
+        if search >= whole_map:
+            return None
         search *= 2
-    return None
 
 
 @dataclass
