@@ -9,7 +9,6 @@ from pathlib import Path
 
 import pytest
 
-from game.app.run import input_script
 from game.checker.cli import main as levels_main
 from game.checker.reach import DEFAULT_LIMITS, measure_limits, measure_reach
 from game.collision.aabb import Box
@@ -17,12 +16,13 @@ from game.collision.shapes import TileKind
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.levels.loader import check_level
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
-from game.sim.campaign import Campaign, Outcome
+from game.sim.campaign import Outcome
 from game.sim.inputs import Action
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
+from tests.campaign_run import campaign_played
 from tests.in_process import call_main
-from tests.maps import MEASURED, write_tmx
+from tests.maps import write_tmx
 
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
 SHIPPED = sorted(LEVELS_DIR.glob("*.tmx"))
@@ -97,21 +97,13 @@ def exit_tick_said(script: Path) -> int:
 def test_the_whole_campaign_is_won_by_the_winning_scripts_at_the_ticks_they_say() -> None:
     """Each level's script, played on from the one before, reaches the exit at the tick its
     comment says, with no life lost and no overlap: every shipped script is replayed once."""
-    campaign = Campaign(FIRST_LEVEL, loader=load_level, measure=MEASURED)
-    start_tick, script = 0, input_script(SCRIPTS / f"{FIRST_LEVEL.stem}.txt")
-    level, won_at = campaign.world.level.path, dict[str, int]()
-    while campaign.outcome is Outcome.RUNNING:
-        campaign.tick(script.held_at(campaign.ticks - start_tick))
-        if campaign.levels_completed > len(won_at):
-            won_at[level.stem] = campaign.ticks - start_tick
-            assert campaign.deaths == 0, f"{level.name}: the script lost a life"
-            if campaign.outcome is Outcome.RUNNING:       # on to the next level and its script
-                level, start_tick = campaign.world.level.path, campaign.ticks
-                script = input_script(SCRIPTS / f"{level.stem}.txt")
-        assert campaign.ticks - start_tick < 60 * 60 * 5, f"{level.name}: no exit in 5 minutes"
-    assert campaign.outcome is Outcome.WON and campaign.max_penetration_px == 0.0
-    assert won_at == {path.stem: exit_tick_said(SCRIPTS / f"{path.stem}.txt")
-                      for path in SHIPPED}
+    played = campaign_played()
+    for name, level in played.levels.items():
+        assert level.won_at is not None, f"{name}: no exit in 5 minutes"
+        assert level.deaths == 0, f"{name}: the script lost a life"
+    assert played.outcome is Outcome.WON and played.max_penetration_px == 0.0
+    assert {name: level.won_at for name, level in played.levels.items()} == {
+        path.stem: exit_tick_said(SCRIPTS / f"{path.stem}.txt") for path in SHIPPED}
 
 
 CAMPAIGN_TICKS = 8 * 60 * 60  # the campaign lasts at least 8 minutes at the scripts' pace

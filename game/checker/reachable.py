@@ -350,6 +350,10 @@ def _standing(world: World, box: Box) -> bool:
     return ground_under(world.solids, box) is not None
 
 
+_NEIGHBOURS = tuple((dc, dr) for dc in (-1, 0, 1) for dr in (-1, 0, 1)
+                    if dc or dr)  # the eight cells round a cell, in the order an arc visits them
+
+
 class _Fill:
     """A fill that can be seeded again and run on (the base: an open-cell flood)."""
 
@@ -539,36 +543,50 @@ class _JumpFill(_Fill):
 
     def _arc(self, start: Cell, feet_y: float, max_rise: float = math.inf) -> None:
         """Every open cell a jump from ``start`` (feet at ``feet_y``) could pass through,
-        rising at most ``max_rise`` (0: a fall from rest)."""
+        rising at most ``max_rise`` (0: a fall from rest). The sideways distance to each
+        column and the most a jump rises there are worked out once per arc, and
+        :meth:`open` is written out in the loop: this loop is most of a check's time."""
         grid, env = self.grid, self.envelope
         tile_w, tile_h = grid.tile_w, grid.tile_h
+        cols, rows, top = grid.cols, grid.rows, -self.sky_rows
+        closed, moves, spend = self.closed, self.moves, self.work.spend
+        reach_x_px = env.reach_x_px
         x_lo, x_hi = start[0] * tile_w, (start[0] + 1) * tile_w  # the feet's x is in here
+        by_column: dict[int, tuple[float, float]] = {}  # (sideways distance, rise)
         local: set[Cell] = {start}
         queue: deque[Cell] = deque([start])
         while queue:
-            col, row = queue.popleft()
-            self.work.spend(8)
-            for dc in (-1, 0, 1):
-                for dr in (-1, 0, 1):
-                    near = (col + dc, row + dr)
-                    if (dc == 0 and dr == 0) or not self.open(near):
-                        continue
-                    c_lo, c_hi = near[0] * tile_w, (near[0] + 1) * tile_w
-                    distance = max(0.0, c_lo - x_hi, x_lo - c_hi)
-                    lowest_y = (near[1] + 1) * tile_h  # the cell's bottom: the least rise
-                    if lowest_y <= feet_y - min(max_rise, env.rise_at(distance)):
-                        continue  # wholly above what a jump reaches at that distance
-                    self.moves.setdefault((col, row), set()).add(near)
-                    if near in local:
-                        continue
-                    local.add(near)
-                    depth = near[1] * tile_h - feet_y  # how far below take-off, at least
-                    if depth >= FALL_DEPTH_PX:
-                        self._start_fall(near)
-                    elif distance > env.reach_x_px:
-                        continue
-                    else:
-                        queue.append(near)
+            cell = queue.popleft()
+            col, row = cell
+            spend(8)
+            leads_to: set[Cell] | None = None
+            for dc, dr in _NEIGHBOURS:
+                near = (col + dc, row + dr)
+                if not (0 <= near[0] < cols and top <= near[1] < rows) or near in closed:
+                    continue
+                known = by_column.get(near[0])
+                if known is None:
+                    c_lo = near[0] * tile_w
+                    distance = max(0.0, c_lo - x_hi, x_lo - c_lo - tile_w)
+                    known = by_column[near[0]] = (distance, min(max_rise,
+                                                                env.rise_at(distance)))
+                distance, rise = known
+                lowest_y = (near[1] + 1) * tile_h  # the cell's bottom: the least rise
+                if lowest_y <= feet_y - rise:
+                    continue  # wholly above what a jump reaches at that distance
+                if leads_to is None:
+                    leads_to = moves.setdefault(cell, set())
+                leads_to.add(near)
+                if near in local:
+                    continue
+                local.add(near)
+                depth = near[1] * tile_h - feet_y  # how far below take-off, at least
+                if depth >= FALL_DEPTH_PX:
+                    self._start_fall(near)
+                elif distance > reach_x_px:
+                    continue
+                else:
+                    queue.append(near)
         for cell in local:
             self._reach_cell(cell)
 
