@@ -78,7 +78,7 @@ def test_tile_layers_keep_tiled_document_order_around_object_layers() -> None:
 
 
 def test_hazard_tiles_use_their_partial_collision_rectangle() -> None:
-    path = LEVELS_DIR / "02-over-the-gaps.tmx"
+    path = LEVELS_DIR / "03-hop-along.tmx"
     spikes = [s for s in load_level(path).grid.shapes() if s.kind is TileKind.HAZARD]
     assert spikes
     for shape in spikes:
