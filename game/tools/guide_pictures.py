@@ -28,6 +28,7 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 import pygame
@@ -159,10 +160,13 @@ def screenshots() -> None:
 
 
 def route() -> None:
+    """The solver's route through the first level; its script goes to a file thrown away
+    (``solve --out`` writes only regular files)."""
     env = {**os.environ, "SDL_VIDEODRIVER": "dummy"}
-    subprocess.run([sys.executable, "-m", "game.levels", "solve", str(FIRST_LEVEL), "--out",
-                    os.devnull, "--picture", str(GUIDE / "route-first-steps.png")],
-                   env=env, check=True)
+    with tempfile.TemporaryDirectory() as folder:
+        subprocess.run([sys.executable, "-m", "game.levels", "solve", str(FIRST_LEVEL),
+                        "--out", str(Path(folder) / "route.txt"),
+                        "--picture", str(GUIDE / "route-first-steps.png")], env=env, check=True)
 
 
 def main() -> None:
