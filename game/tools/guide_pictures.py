@@ -149,7 +149,7 @@ def reach(sheet: pygame.Surface) -> None:
 
 
 def screenshots() -> None:
-    """Hop Along at ticks 60 and 90, running right with the winning script."""
+    """Hop Along at ticks 60 and 100, running right with the winning script."""
     level = LEVELS_DIR / "03-hop-along.tmx"
     script = ROOT / "tests" / "scripts" / "03-hop-along.txt"
     env = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy"}
