@@ -78,12 +78,32 @@ def test_tile_layers_keep_tiled_document_order_around_object_layers() -> None:
 
 
 def test_hazard_tiles_use_their_partial_collision_rectangle() -> None:
-    path = LEVELS_DIR / "02-over-the-gaps.tmx"
+    path = LEVELS_DIR / "03-hop-along.tmx"
     spikes = [s for s in load_level(path).grid.shapes() if s.kind is TileKind.HAZARD]
     assert spikes
     for shape in spikes:
         assert shape.box.h == 8 and shape.box.w == 14           # drawn in Tiled: (1, 8) 14x8
         assert shape.box.x == shape.col * 16 + 1 and shape.box.y == shape.row * 16 + 8
+
+
+def _pit_columns_and_spikes(level: Path) -> tuple[int, int]:
+    """How many columns of ``level`` have no Solid tile in the bottom row (a fall there
+    leaves the map), and how many Hazard tiles it has."""
+    grid = load_level(level).grid
+    floor = {shape.col for shape in grid.shapes()
+             if shape.kind is TileKind.SOLID and shape.row == grid.rows - 1}
+    spikes = sum(1 for shape in grid.shapes() if shape.kind is TileKind.HAZARD)
+    return grid.cols - len(floor), spikes
+
+
+def test_the_first_levels_bring_in_pits_then_spikes() -> None:
+    """As the guide says: First Steps has no pit and no spike, Over the Gaps has the first
+    pits, Hop Along the first spikes."""
+    first, gaps, hops = (_pit_columns_and_spikes(LEVELS_DIR / name) for name in (
+        "01-first-steps.tmx", "02-over-the-gaps.tmx", "03-hop-along.tmx"))
+    assert first == (0, 0)
+    assert gaps[0] > 0 and gaps[1] == 0
+    assert hops[1] > 0
 
 
 def exit_tick_said(script: Path) -> int:

@@ -156,7 +156,7 @@ def lowered_floor(grid: TileGrid, floor_px: int) -> dict[int, int]:
 
 def test_ground_lower_than_the_floor_line_is_drawn_over_scenery_not_the_pits_darkness(
         assets: Assets) -> None:
-    level = LEVELS_DIR / "02-over-the-gaps.tmx"  # its floor steps down a tile, twice
+    level = LEVELS_DIR / "02-over-the-gaps.tmx"  # its floor steps down into dips
     world = World(load_level(level, images=True))
     grid = world.level.grid
     floor_px = floor_line_px(grid)
@@ -169,7 +169,8 @@ def test_ground_lower_than_the_floor_line_is_drawn_over_scenery_not_the_pits_dar
     target = pygame.display.get_surface()
     drawn = {(col, row) for layer in (*world.level.layers, *world.level.foreground)
              for row, line in enumerate(layer.gids) for col, gid in enumerate(line) if gid}
-    world.camera.x, world.camera.y = 0.0, float(grid.rows * grid.tile_h - 180)
+    world.camera.x = float((min(lowered) - 5) * grid.tile_w)  # the first dips in view
+    world.camera.y = float(grid.rows * grid.tile_h - 180)
     renderer.draw(target, world, 0)
     checked = 0
     for col, top in lowered.items():
