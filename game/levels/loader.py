@@ -26,7 +26,7 @@ and tile data it points to, then the objects, and only then pytmx, given a clean
 >>> from game.levels import FIRST_LEVEL
 >>> level = load_level(FIRST_LEVEL)
 >>> level.title, level.spawn, len(level.coins), [layer.name for layer in level.layers]
-('First Steps', Box(x=34.0, y=114.0, w=12.0, h=14.0), 12, ['decor', 'ground'])
+('First Steps', Box(x=34.0, y=114.0, w=12.0, h=14.0), 30, ['decor', 'ground'])
 >>> check_level(FIRST_LEVEL).errors
 []
 """
