@@ -193,7 +193,7 @@ class Effort:
     #                            :func:`game.checker.search_budget.map_budget`)
     greedy_moves: int = 14_000  # of those, the most the best-first search may try first
     #                             (or GREEDY_SHARE of the stage's moves, where that is more)
-    width: int = 3  # the beam's width where it is not stuck
+    width: int = 2  # the beam's width where it is not stuck
     seconds: float | None = None  # an extra wall-clock limit (None: none, the default)
 
 
