@@ -1,7 +1,8 @@
 """How the solver searches: the wait for a platform ends when the simulation says it comes,
 a beam keeps one state a tile while others are left, a stuck beam goes back a few layers
-and widens instead of starting again from the spawn, and a long maze of low corridors is
-solved by the best-first search with a few moves a tile."""
+and widens instead of starting again from the spawn, the air beside a cliff is left for the
+stairs once crowded, and a long maze of low corridors is solved by the best-first search
+with a few moves a tile."""
 
 from __future__ import annotations
 
@@ -17,6 +18,7 @@ from game.checker.solver import (
     COMES_PX,
     LAST_COYOTE_TICK,
     MOVE_TICKS,
+    PLAIN_SHARE,
     UNTIL_A_PLATFORM_COMES,
     Effort,
     Node,
@@ -157,6 +159,35 @@ def test_a_gap_past_a_running_jump_is_crossed_by_a_jump_on_the_last_coyote_tick(
         world.step(held)
     else:
         raise AssertionError("the route never jumps off the edge")
+
+
+# One-way stairs up beside a cliff: each stair is reached by a jump from the one two tiles
+# below, zigzagging, and only the top stairs lead onto the cliff; the air beside the cliff
+# is where the reach proof's steps lead, but no jump from below climbs it.
+STAIRS_BESIDE_A_CLIFF = [
+    "                           ",
+    "                           ",
+    "         --- ---  ######  D",
+    "                  #########",
+    "     ---          #########",
+    "                  #########",
+    "         ---      #########",
+    "                  #########",
+    "     ---          #########",
+    "                  #########",
+    "P ###             #########",
+    "#####^^^^^^^^^^^^^#########",
+]
+
+
+def test_the_air_beside_a_cliff_is_left_for_the_stairs_once_it_is_crowded() -> None:
+    """Every jump from the stairs into the air beside the cliff is a state of its own, and
+    their tiles are nearer the Exit by the steps than the stair that leads on: scored by
+    the steps alone, the best-first search tried them until the budget ran out."""
+    level = level_from_ascii(STAIRS_BESIDE_A_CLIFF)
+    solution = solve(level)
+    assert solution.found and solution.own_budget, solution.moves_tried
+    assert solution.moves_tried < solution.budget * PLAIN_SHARE
 
 
 MAZE_CORRIDORS = 20  # corridors two tiles high, each run from one end to the other
