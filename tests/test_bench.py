@@ -176,6 +176,14 @@ def test_the_wall_lookups_find_the_same_walls() -> None:
     assert len(wall_map.shapes) > 2 * len(list(walls.pattern().shapes()))
 
 
+def test_the_walls_maps_are_the_ones_the_readme_counts_whatever_the_shipped_levels() -> None:
+    """The pattern is kept in the bench, not read from a level a designer may change: the
+    200x40 map holds the 2,413 walls the README's figures were measured on."""
+    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text(encoding="utf-8")
+    assert "the 2,413 walls of a 200x40 map" in readme
+    assert len(list(walls.repeated_map(walls.pattern(), 200, 40).shapes())) == 2_413
+
+
 def test_the_wide_arena_has_the_same_bodies_on_a_map_twenty_times_wider() -> None:
     narrow_level, wide_level = game_step.arena(1), game_step.arena(game_step.WIDTH_FACTOR)
     assert wide_level.grid.cols == game_step.WIDTH_FACTOR * narrow_level.grid.cols

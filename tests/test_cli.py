@@ -243,20 +243,20 @@ FIRST = ROOT / "levels" / "01-first-steps.tmx"
 
 def test_a_script_run_without_ticks_ends_when_its_level_ends(
         tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(run_module, "HEADLESS_TICK_LIMIT", 3_000)  # the level ends near 900
+    monkeypatch.setattr(run_module, "HEADLESS_TICK_LIMIT", 3_000)  # the level ends near 2,110
     report = report_of(tmp_path, "--level", FIRST, "--inputs", WINNING)
     assert report["outcome"] == "won" and report["levels_completed"] == 1
     assert str(report["level"]).endswith("01-first-steps.tmx")
-    assert isinstance(report["ticks"], int) and report["ticks"] < 900
+    assert isinstance(report["ticks"], int) and report["ticks"] < 2_200
 
 
 def test_go_on_carries_a_script_run_on_into_the_next_level(
         tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(run_module, "HEADLESS_TICK_LIMIT", 1_000)
+    monkeypatch.setattr(run_module, "HEADLESS_TICK_LIMIT", 2_500)
     report = report_of(tmp_path, "--level", FIRST, "--inputs", WINNING, "--go-on")
     assert report["outcome"] == "running" and report["levels_completed"] == 1
-    assert str(report["level"]).endswith("02-over-the-gaps.tmx") and report["ticks"] == 1_000
-    with_ticks = report_of(tmp_path, "--level", FIRST, "--inputs", WINNING, "--ticks", "1000")
+    assert str(report["level"]).endswith("02-over-the-gaps.tmx") and report["ticks"] == 2_500
+    with_ticks = report_of(tmp_path, "--level", FIRST, "--inputs", WINNING, "--ticks", "2500")
     assert with_ticks["level"] == report["level"]  # --ticks goes on, as it always has
 
 
@@ -266,12 +266,12 @@ def test_go_on_carries_a_script_run_on_into_the_next_level(
     (("--inputs", WINNING, "--go-on"), "and the levels after it with the input script")])
 def test_a_headless_run_without_ticks_says_on_stdout_what_it_will_run(
         monkeypatch: pytest.MonkeyPatch, options: tuple[str | Path, ...], says: str) -> None:
-    monkeypatch.setattr(run_module, "HEADLESS_TICK_LIMIT", 1_000)  # after the script's end
+    monkeypatch.setattr(run_module, "HEADLESS_TICK_LIMIT", 2_500)  # after the script's end
     ran = call_main(cli.main, ["--headless", "--level", FIRST, *options], cwd=ROOT)
     assert ran.returncode == 0, ran.stderr
     [line] = ran.stdout.splitlines()
     assert line.startswith("python -m game: playing levels/01-first-steps.tmx") and says in line
-    assert "for at most 1,000 ticks" in line and "--ticks N" in line
+    assert "for at most 2,500 ticks" in line and "--ticks N" in line
     timed = call_main(cli.main, ["--headless", "--level", FIRST, *options, "--ticks", "30"],
                       cwd=ROOT)
     assert (timed.returncode, timed.stdout, timed.stderr) == (0, "", "")  # as it always was

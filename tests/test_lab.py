@@ -36,10 +36,10 @@ from game.lab.polygons import Polygons
 from game.lab.quadtree import QuadtreeScene
 from game.lab.response import ARENA, Response
 from game.lab.rotated_box import RotatedBox
-from game.lab.scene import GROUPS, Layer, Scene
+from game.lab.scene import AREA, GROUPS, LAB_H_PX, LAB_W_PX, Layer, Scene
 from game.lab.screen_grid import ScreenGrid
 from game.lab.sort_and_sweep import SortAndSweepScene
-from game.lab.testbed import Lab
+from game.lab.testbed import MENU_ROW_PX, MENU_TOP_PX, Lab
 from game.lab.tunnelling import LANES, Tunnelling, wall_of
 from game.lab.xray import XRay
 from tests.in_process import call_main
@@ -149,7 +149,7 @@ def test_every_scene_draws_headless_and_no_two_pictures_are_the_same(tmp_path: P
         path = tmp_path / f"{name}.png"
         assert main(["--scene", name, "--screenshot", str(path), "--frames", "2"]) == 0
         image = pygame.image.load(str(path))
-        assert image.get_size() == (960, 540)
+        assert image.get_size() == (LAB_W_PX, LAB_H_PX)
         digests[name] = hashlib.sha256(pygame.image.tobytes(image, "RGB")).hexdigest()
     assert len(set(digests.values())) == len(NAMES)
 
@@ -186,7 +186,7 @@ def test_the_list_opens_a_scene_with_keys_and_esc_goes_back() -> None:
 
 def test_a_click_in_the_list_opens_that_scene() -> None:
     bed = Lab(SCENES)
-    click(bed, (60, 70 + 26 * 3 + 5))
+    click(bed, (60, MENU_TOP_PX + MENU_ROW_PX * 3 + 5))
     assert bed.scene is not None and bed.scene.name == NAMES[3]
 
 
@@ -389,7 +389,7 @@ def test_quadtree_splits_as_bodies_are_added() -> None:
     assert isinstance(scene, QuadtreeScene)
     nodes = scene.tree.node_count()
     count = len(scene.crowd.boxes)
-    click(bed, (500, 400))
+    click(bed, (AREA.right - 20, AREA.bottom - 20))
     assert len(scene.crowd.boxes) == count + 1
     key(bed, *[pygame.K_a] * 5)
     assert scene.tree.node_count() > nodes
@@ -492,11 +492,11 @@ def test_the_contacts_picture_says_what_the_readme_says() -> None:
     for _ in range(420 - 1):
         bed.frame()
     assert scene.ticks == 420
-    assert "events so far: 13 (starts and ends)" in scene.status()
-    assert "'print every tick' would have printed 457 lines" in scene.status()
+    assert "events so far: 16 (starts and ends)" in scene.status()
+    assert "'print every tick' would have printed 557 lines" in scene.status()
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    assert "after 420 ticks the tracker has logged 13 starts and ends" in readme
-    assert "would have written 457 lines" in readme
+    assert "after 420 ticks the tracker has logged 16 starts and ends" in readme
+    assert "would have written 557 lines" in readme
     assert '"contacts": 420' in (ROOT / "game/tools/lab_screenshots.py").read_text("utf-8")
 
 
@@ -529,7 +529,7 @@ def test_platformer_runs_into_a_wall_and_stops_flush_recording_the_cells_it_swep
     body = scene.body()
     key(bed, pygame.K_p)
     drag(bed, scene.grab_boxes()["body"].center,
-         (ORIGIN[0] + 196 + body.w / 2, ORIGIN[1] + 292 - 60 + body.h / 2))
+         (ORIGIN[0] + 196 + body.w / 2, ORIGIN[1] + 228 - 60 + body.h / 2))
     assert scene.body().x == 196  # 156 px from the wall: a bit over three ticks
     key(bed, pygame.K_p)
     for _ in range(30):

@@ -13,14 +13,30 @@ from typing import Any
 import pygame
 import pytest
 
-from game.app.window import DESKTOP_SHARE_PERCENT
+from game.app.window import DESKTOP_SHARE_PERCENT, window_size
+from game.collision.aabb import Box
 from game.lab import canvas
 from game.lab.catalogue import SCENES
 from game.lab.overlap import WALL, Overlap, collision_status
 from game.lab.party_grid import PartyGrid
-from game.lab.scene import AREA, GROUPS, LAB_H_PX, LAB_W_PX, Layer, Scene
-from game.lab.testbed import Lab, fit_window, screen, window_size
+from game.lab.platformer import MAP, TILE_PX, on_screen
+from game.lab.scene import AREA, GROUPS, LAB_H_PX, LAB_W_PX, PANEL, Layer, Scene
+from game.lab.testbed import (
+    COMMON_HELP,
+    HELP_Y,
+    KEY_Y,
+    MENU_TOP_PX,
+    PAUSED,
+    Lab,
+    fit_window,
+    menu_rows,
+    paused_x,
+    screen,
+    title_line,
+)
 from game.lab.tunnelling import LANES, TICKS_PER_STEP_RUNNING, Tunnelling, verdict_color
+from game.sim.camera import VIEW_H_PX, VIEW_W_PX
+from game.tools.lab_screenshots import DEFAULT_FRAMES, FRAMES
 
 ROOT = Path(__file__).resolve().parent.parent
 NAMES = [scene.name for scene in SCENES]
@@ -361,18 +377,35 @@ def test_the_party_grid_picture_says_what_the_readme_says() -> None:
     for _ in range(121):  # as game.tools.lab_screenshots draws it
         bed.frame()
     assert bed.scene is not None
-    assert any("it makes 22x fewer tests" in line for line in bed.scene.status())
+    assert any("it makes 18x fewer tests" in line for line in bed.scene.status())
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    assert "(22x fewer in the picture)" in readme
+    assert "(18x fewer in the picture)" in readme
 
 
 # --- the window ----------------------------------------------------------------------------
+LAB = (LAB_W_PX, LAB_H_PX)
+
+
+def test_the_lab_draws_an_800_by_450_screen_that_opens_at_2x_on_1920_by_1080() -> None:
+    assert LAB == (800, 450) and screen().get_size() == LAB
+    assert window_size((1920, 1080), LAB) == (1600, 900)
+
+
+@pytest.mark.parametrize("desktop", [(1920, 1080), (3840, 2160), (2000, 1200)])
+def test_the_lab_and_the_game_open_the_same_window_where_both_scales_are_whole(
+        desktop: tuple[int, int]) -> None:
+    """The lab's screen is 2.5 times the game's each way, so wherever the game's scale is
+    a multiple of 5 (5x on 1920x1080, 10x on 3840x2160) the two windows are one size."""
+    assert LAB_W_PX * 2 == VIEW_W_PX * 5 and LAB_H_PX * 2 == VIEW_H_PX * 5
+    assert window_size(desktop, LAB) == window_size(desktop)
+
+
 @pytest.mark.parametrize("desktop", [(1920, 1080), (1280, 720), (2560, 1440), (3840, 2160)])
 def test_the_lab_window_fits_inside_ninety_percent_of_the_desktop_like_the_game(
         desktop: tuple[int, int]) -> None:
-    size = window_size(desktop)
+    size = window_size(desktop, LAB)
     assert size[0] * LAB_H_PX == size[1] * LAB_W_PX and size[0] % LAB_W_PX == 0  # whole scale
-    if size != (LAB_W_PX, LAB_H_PX):  # a 1x window is kept even on a small desktop
+    if size != LAB:  # a 1x window is kept even on a small desktop
         assert all(s * 100 <= d * DESKTOP_SHARE_PERCENT for s, d in zip(size, desktop,
                                                                          strict=True))
     bigger = (size[0] + LAB_W_PX, size[1] + LAB_H_PX)
@@ -382,9 +415,71 @@ def test_the_lab_window_fits_inside_ninety_percent_of_the_desktop_like_the_game(
 def test_fitting_sizes_the_lab_window_for_its_desktop() -> None:
     pygame.display.quit()  # a scaled window is made afresh, as the lab's own is
     pygame.display.init()
-    pygame.display.set_mode((LAB_W_PX, LAB_H_PX), pygame.SCALED | pygame.RESIZABLE)
+    pygame.display.set_mode(LAB, pygame.SCALED | pygame.RESIZABLE)
     window = fit_window()
     desktop = pygame.display.get_desktop_sizes()[window.display_index]
-    assert tuple(window.size) == window_size(desktop)
+    assert tuple(window.size) == window_size(desktop, LAB)
     pygame.display.quit()
     pygame.display.init()
+
+
+# --- the layout: everything on the screen, nothing over anything else -------------------------
+SCREEN = pygame.Rect(0, 0, LAB_W_PX, LAB_H_PX)
+
+
+def text_rect(words: str, at: tuple[int, int], size_pt: int = canvas.TEXT_PT) -> pygame.Rect:
+    return pygame.Rect(at, canvas.font(size_pt).size(words))
+
+
+def disjoint(rects: list[pygame.Rect]) -> bool:
+    return all(a.collidelist(rects[i + 1:]) == -1 for i, a in enumerate(rects))
+
+
+def test_the_area_the_panel_and_the_lines_around_them_fit_the_screen_apart() -> None:
+    help_line = pygame.Rect(0, HELP_Y, LAB_W_PX, KEY_Y - HELP_Y)
+    title_row = pygame.Rect(0, 0, LAB_W_PX, min(AREA.y, PANEL.y))
+    assert all(SCREEN.contains(part) for part in (AREA, PANEL, help_line, title_row))
+    assert disjoint([AREA, PANEL, help_line, title_row])
+    assert text_rect("Xg", (8, 6), canvas.TITLE_PT).bottom <= AREA.y
+    assert text_rect("Xg", (8, HELP_Y)).bottom <= KEY_Y
+    assert text_rect("Xg", (8, KEY_Y)).bottom <= LAB_H_PX
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_row_of_a_scenes_panel_leaves_the_panel_or_covers_another(name: str) -> None:
+    """As the README's picture shows the scene (the frames the pictures run), and then
+    paused, which adds PAUSED to the title line."""
+    bed, scene = open_scene(name)
+    for _ in range(FRAMES.get(name, DEFAULT_FRAMES) - 1):
+        bed.frame()
+    key(bed, pygame.K_p)
+    rows = bed.panel_rows()
+    inked = canvas.font().get_height()  # a row of text is drawn this tall; the rest is gap
+    boxes = [row.rect if row.button or row.graph is not None
+             else pygame.Rect(row.rect.topleft, (row.rect.w, inked)) for row in rows]
+    outside = [row.text for row in rows if not PANEL.contains(row.rect)]
+    assert not outside, f"{name}: rows past the panel: {outside}"
+    assert disjoint(boxes), f"{name}: panel rows drawn over each other"
+    title = text_rect(title_line(scene), (8, 6), canvas.TITLE_PT)
+    paused = text_rect(PAUSED, (paused_x(), 6), canvas.TITLE_PT)
+    assert SCREEN.contains(paused) and title.right < paused.left, f"{name}: title under PAUSED"
+    help_line = text_rect(f"{scene.keys_help}  |  {COMMON_HELP}", (8, HELP_Y))
+    assert SCREEN.contains(help_line), f"{name}: the help line is cut off"
+    key_x = 8
+    for _, meaning in canvas.VERDICTS:
+        key_x = text_rect(meaning, (key_x, KEY_Y)).right + 16
+    assert key_x - 16 <= LAB_W_PX
+    grabbable = [box.to_rect() for box in scene.grab_boxes().values()]
+    assert all(AREA.contains(box) for box in grabbable), f"{name}: a shape starts off its area"
+
+
+def test_every_row_of_the_list_fits_above_its_help_line() -> None:
+    rows = menu_rows(Lab(SCENES))
+    assert rows[0].top >= MENU_TOP_PX and all(SCREEN.contains(row) for row in rows)
+    assert max(row.bottom for row in rows) <= HELP_Y
+    assert disjoint(rows)
+
+
+def test_the_platformers_whole_tile_map_is_drawn_inside_the_area() -> None:
+    whole = on_screen(Box(0, 0, len(MAP[0]) * TILE_PX, len(MAP) * TILE_PX)).to_rect()
+    assert AREA.contains(whole)

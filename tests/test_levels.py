@@ -9,7 +9,6 @@ from pathlib import Path
 
 import pytest
 
-from game.app.run import input_script
 from game.checker.cli import main as levels_main
 from game.checker.reach import DEFAULT_LIMITS, measure_limits, measure_reach
 from game.collision.aabb import Box
@@ -17,12 +16,13 @@ from game.collision.shapes import TileKind
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.levels.loader import check_level
 from game.sim.camera import VIEW_H_PX, VIEW_W_PX
-from game.sim.campaign import Campaign, Outcome
+from game.sim.campaign import Outcome
 from game.sim.inputs import Action
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
+from tests.campaign_run import campaign_played
 from tests.in_process import call_main
-from tests.maps import MEASURED, write_tmx
+from tests.maps import write_tmx
 
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
 SHIPPED = sorted(LEVELS_DIR.glob("*.tmx"))
@@ -78,12 +78,32 @@ def test_tile_layers_keep_tiled_document_order_around_object_layers() -> None:
 
 
 def test_hazard_tiles_use_their_partial_collision_rectangle() -> None:
-    path = LEVELS_DIR / "02-over-the-gaps.tmx"
+    path = LEVELS_DIR / "03-hop-along.tmx"
     spikes = [s for s in load_level(path).grid.shapes() if s.kind is TileKind.HAZARD]
     assert spikes
     for shape in spikes:
         assert shape.box.h == 8 and shape.box.w == 14           # drawn in Tiled: (1, 8) 14x8
         assert shape.box.x == shape.col * 16 + 1 and shape.box.y == shape.row * 16 + 8
+
+
+def _pit_columns_and_spikes(level: Path) -> tuple[int, int]:
+    """How many columns of ``level`` have no Solid tile in the bottom row (a fall there
+    leaves the map), and how many Hazard tiles it has."""
+    grid = load_level(level).grid
+    floor = {shape.col for shape in grid.shapes()
+             if shape.kind is TileKind.SOLID and shape.row == grid.rows - 1}
+    spikes = sum(1 for shape in grid.shapes() if shape.kind is TileKind.HAZARD)
+    return grid.cols - len(floor), spikes
+
+
+def test_the_first_levels_bring_in_pits_then_spikes() -> None:
+    """As the guide says: First Steps has no pit and no spike, Over the Gaps has the first
+    pits, Hop Along the first spikes."""
+    first, gaps, hops = (_pit_columns_and_spikes(LEVELS_DIR / name) for name in (
+        "01-first-steps.tmx", "02-over-the-gaps.tmx", "03-hop-along.tmx"))
+    assert first == (0, 0)
+    assert gaps[0] > 0 and gaps[1] == 0
+    assert hops[1] > 0
 
 
 def exit_tick_said(script: Path) -> int:
@@ -97,21 +117,13 @@ def exit_tick_said(script: Path) -> int:
 def test_the_whole_campaign_is_won_by_the_winning_scripts_at_the_ticks_they_say() -> None:
     """Each level's script, played on from the one before, reaches the exit at the tick its
     comment says, with no life lost and no overlap: every shipped script is replayed once."""
-    campaign = Campaign(FIRST_LEVEL, loader=load_level, measure=MEASURED)
-    start_tick, script = 0, input_script(SCRIPTS / f"{FIRST_LEVEL.stem}.txt")
-    level, won_at = campaign.world.level.path, dict[str, int]()
-    while campaign.outcome is Outcome.RUNNING:
-        campaign.tick(script.held_at(campaign.ticks - start_tick))
-        if campaign.levels_completed > len(won_at):
-            won_at[level.stem] = campaign.ticks - start_tick
-            assert campaign.deaths == 0, f"{level.name}: the script lost a life"
-            if campaign.outcome is Outcome.RUNNING:       # on to the next level and its script
-                level, start_tick = campaign.world.level.path, campaign.ticks
-                script = input_script(SCRIPTS / f"{level.stem}.txt")
-        assert campaign.ticks - start_tick < 60 * 60 * 5, f"{level.name}: no exit in 5 minutes"
-    assert campaign.outcome is Outcome.WON and campaign.max_penetration_px == 0.0
-    assert won_at == {path.stem: exit_tick_said(SCRIPTS / f"{path.stem}.txt")
-                      for path in SHIPPED}
+    played = campaign_played()
+    for name, level in played.levels.items():
+        assert level.won_at is not None, f"{name}: no exit in 5 minutes"
+        assert level.deaths == 0, f"{name}: the script lost a life"
+    assert played.outcome is Outcome.WON and played.max_penetration_px == 0.0
+    assert {name: level.won_at for name, level in played.levels.items()} == {
+        path.stem: exit_tick_said(SCRIPTS / f"{path.stem}.txt") for path in SHIPPED}
 
 
 CAMPAIGN_TICKS = 8 * 60 * 60  # the campaign lasts at least 8 minutes at the scripts' pace

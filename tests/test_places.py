@@ -12,15 +12,14 @@ import pytest
 from game.app.assets import Assets
 from game.app.places import PLACES, place_of, recolour
 from game.app.render import WorldRenderer, floor_line_px, pit_spans_px
-from game.app.run import input_script
 from game.collision.shapes import TileKind
 from game.collision.tile_grid import TileGrid
 from game.levels import LEVELS_DIR, load_level
 from game.levels.classes import SETTINGS
 from game.levels.loader import check_level
-from game.sim.campaign import Campaign, Outcome
 from game.sim.world import World
 from game.tools import art
+from tests.campaign_run import campaign_played, pit_columns
 
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
 SHIPPED = sorted(LEVELS_DIR.glob("*.tmx"))
@@ -99,25 +98,12 @@ def test_an_unknown_setting_is_an_error_that_lists_the_settings(tmp_path: Path) 
 
 @pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
 def test_a_pit_in_view_shows_its_bottom_all_through_the_winning_run(level: Path) -> None:
-    script = input_script(SCRIPTS / f"{level.stem}.txt")
-    campaign = Campaign(level, loader=load_level)
-    grid = campaign.world.level.grid
-    floor = floor_line_px(grid) // grid.tile_h
-    pits = [col for col in range(grid.cols)  # no ground at the floor line: a pit
-            if not any(s.kind is TileKind.SOLID for s in grid.shapes_at(col, floor))]
-    assert pits, "every shipped level has a pit or a spike pit"
-    map_h = grid.rows * grid.tile_h
-    checked = 0
-    while campaign.levels_completed == 0 and campaign.outcome is Outcome.RUNNING:
-        campaign.tick(script.held_at(campaign.ticks))
-        camera = campaign.world.camera
-        left, right = camera.x, camera.x + camera.view_w
-        seen = [col for col in pits if left < (col + 1) * grid.tile_w and col * grid.tile_w < right]
-        if seen:
-            checked += 1
-            assert camera.y + camera.view_h >= map_h, (
-                f"tick {campaign.ticks}: pit at column {seen[0]} in view, its bottom is not")
-    assert checked > 0
+    """Watched tick by tick in the campaign's one run by the winning scripts
+    (tests/test_levels.py), which plays each level from its start by its own script."""
+    assert pit_columns(load_level(level).grid), "every shipped level has a pit or a spike pit"
+    played = campaign_played().levels[level.stem]
+    assert played.pit_bottom_hidden == []
+    assert played.pit_views > 0
 
 
 DARK_LUMA = 60  # the brightest (0.299 r + 0.587 g + 0.114 b) a pit's darkness may be; the
@@ -170,7 +156,7 @@ def lowered_floor(grid: TileGrid, floor_px: int) -> dict[int, int]:
 
 def test_ground_lower_than_the_floor_line_is_drawn_over_scenery_not_the_pits_darkness(
         assets: Assets) -> None:
-    level = LEVELS_DIR / "02-over-the-gaps.tmx"  # its floor steps down a tile, twice
+    level = LEVELS_DIR / "02-over-the-gaps.tmx"  # its floor steps down into dips
     world = World(load_level(level, images=True))
     grid = world.level.grid
     floor_px = floor_line_px(grid)
@@ -183,7 +169,8 @@ def test_ground_lower_than_the_floor_line_is_drawn_over_scenery_not_the_pits_dar
     target = pygame.display.get_surface()
     drawn = {(col, row) for layer in (*world.level.layers, *world.level.foreground)
              for row, line in enumerate(layer.gids) for col, gid in enumerate(line) if gid}
-    world.camera.x, world.camera.y = 0.0, float(grid.rows * grid.tile_h - 180)
+    world.camera.x = float((min(lowered) - 5) * grid.tile_w)  # the first dips in view
+    world.camera.y = float(grid.rows * grid.tile_h - 180)
     renderer.draw(target, world, 0)
     checked = 0
     for col, top in lowered.items():

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import random
 
 import pygame
 import pytest
@@ -245,6 +246,56 @@ def test_deep_in_rock_the_search_grows_until_it_reaches_open_air() -> None:
     grid = grid_of(*((c, r, Box(c * T, r * T, T, T), SOLID) for c in range(10)
                      for r in range(10)))
     assert nearest_free_place(grid, Box(70, 70, 4, 4), search_px=4.0) == Box(70, -4, 4, 4)
+
+
+def rock_with_pockets(cols: int, rows: int, pockets: set[tuple[int, int]]) -> TileGrid:
+    """A map of solid cells but the free ones, the pockets."""
+    return grid_of(*((c, r, Box(c * T, r * T, T, T), SOLID) for c in range(cols)
+                     for r in range(rows) if (c, r) not in pockets), cols=cols, rows=rows)
+
+
+def test_deep_in_rock_a_place_found_is_taken_only_once_none_can_be_nearer() -> None:
+    """Rock but two cells: the first window to hold a free place holds one 169 px away, in
+    the cell (18, 10); the search widens until it is sure, and the nearest is 161.5 px away,
+    off the map's left side."""
+    grid = rock_with_pockets(32, 32, {(18, 10), (19, 4)})
+    assert nearest_free_place(grid, Box(149.5, 259.25, 12, 14)) == Box(-12, 259.25, 12, 14)
+
+
+def test_the_search_finds_what_a_search_of_every_wall_finds() -> None:
+    """Random rock maps with a few free cells, random boxes in them: from a small first
+    window the search ends on the same place as from a first window holding the whole map,
+    which tries every wall's faces."""
+    rng = random.Random(1)
+    for _ in range(12):
+        cols, rows = rng.randint(10, 16), rng.randint(10, 16)
+        pockets = {(rng.randrange(cols), rng.randrange(rows)) for _ in range(rng.randint(3, 8))}
+        grid = rock_with_pockets(cols, rows, pockets)
+        for _ in range(3):
+            w, h = rng.randint(4, 24), rng.randint(4, 24)
+            box = Box(rng.randrange(4 * (grid.width_px - w)) / 4,
+                      rng.randrange(4 * (grid.height_px - h)) / 4, w, h)
+            every_wall = nearest_free_place(grid, box, max(grid.width_px, grid.height_px))
+            first_px = rng.choice([1.0, 4.0, 16.0, 64.0])
+            assert nearest_free_place(grid, box, first_px) == every_wall, (pockets, box)
+
+
+def test_a_way_out_just_past_the_first_window_is_taken_when_it_is_the_nearer() -> None:
+    """All rock, a box 4 px wide and 14 high 82 px from the map's left side and 76 px from
+    its top: the way out up, 90 px, is in the first window (64 px round the box) and the way
+    out left, 86 px, only in the next; the nearer wins. Turned a quarter, the same holds
+    with the two sides swapped."""
+    grid = rock_with_pockets(20, 20, set())
+    assert nearest_free_place(grid, Box(82, 76, 4, 14)) == Box(-4, 76, 4, 14)
+    assert nearest_free_place(grid, Box(76, 82, 14, 4)) == Box(76, -4, 14, 4)
+
+
+def test_a_box_larger_than_the_map_goes_to_the_nearest_place_beyond_the_window() -> None:
+    """A box 400 px square over a map 32 px square with one solid tile: once the window
+    holds the whole map, the nearest place it found (116 px right, as near as 116 px down
+    and higher) is the answer, though it lies farther than the window reaches."""
+    grid = grid_of((0, 0, Box(0, 0, T, T), SOLID), cols=2, rows=2)
+    assert nearest_free_place(grid, Box(-100, -100, 400, 400)) == Box(16, -100, 400, 400)
 
 
 # --- The tile grid ------------------------------------------------------------------------
@@ -614,6 +665,22 @@ def test_below_the_map_a_fall_stops_at_its_bottom_edge_and_the_sky_ends_far_abov
     assert flung.y.swept == Box(20, -SKY_LIMIT_PX - 25, 12, 44)
     inside = move_body(grid, Box(20, 100, 12, 14), 0.0, 10.0)
     assert inside.y.box.y == 110
+
+
+def test_a_move_the_void_or_the_sky_cuts_short_still_says_what_stopped_it() -> None:
+    """A platform whose route leaves the map can lie below its bottom edge or past the sky:
+    a move that ends on it there is held at that edge, and still names the platform as what
+    stopped it."""
+    grid = TileGrid(10, 10, T, T)
+    below, above = (Platform(PlatformSpec(Route(((0.0, y),)), 160, 16, 0.0), n)
+                    for n, y in ((0, 200.0), (1, -SKY_LIMIT_PX - 100)))
+    solids = LevelSolids(grid, PlatformIndex(grid, [below, above]))
+    fell = move_body(solids, Box(20, 150, 12, 14), 0.0, 60.0)
+    assert fell.y.box.y == grid.height_px
+    assert fell.y.hit == Hit(Side.BOTTOM, 200.0, below.shape)
+    flung = move_body(solids, Box(20, 0, 12, 14), 0.0, -2 * SKY_LIMIT_PX)
+    assert flung.y.box.y == -SKY_LIMIT_PX
+    assert flung.y.hit == Hit(Side.TOP, -SKY_LIMIT_PX - 84, above.shape)
 
 
 def test_a_corner_slide_keeps_the_wall_the_run_hit_and_sweeps_both_steps() -> None:

@@ -6,12 +6,13 @@ and is said when the search stops without a route."""
 from __future__ import annotations
 
 import dataclasses
+import functools
 
 import pytest
 
 from game.checker.reach import DEFAULT_LIMITS
 from game.checker.search_budget import MAX_BUDGET, MIN_BUDGET, MOVES_PER_CELL, map_budget
-from game.checker.solver import MOVE_TICKS, PLAIN_SHARE, Effort, replay, solve
+from game.checker.solver import MOVE_TICKS, PLAIN_SHARE, Effort, Solution, replay, solve
 from game.checker.verdict import Kind, judge
 from game.collision.aabb import Box
 from game.sim.campaign import Campaign, Outcome
@@ -97,13 +98,16 @@ def leftwards(script: Script) -> Script:
 
 def far_from_an_enemy(level: Level) -> Level:
     """``level`` with an enemy standing at the far left, well behind the spawn: it changes
-    nothing, but the pixel-exact proof does not cover a map with enemies."""
+    nothing, but the player can walk to it, so the pixel-exact proof does not cover it."""
     return dataclasses.replace(level, enemies=(EnemySpec(Box(2, FLOOR - 12, 14, 12), 0.0),))
 
 
+PIT_UNDER_SPIKES = "pit under spikes, jump held 7 ticks"
+WIDEST_FROM_A_WHOLE_PIXEL = "76 px gap from a spawn at a whole pixel, lined up by a hop"
+
 # Known-truth maps, each with a script that wins it in the game.
 KNOWN: dict[str, tuple[Level, Script]] = {
-    "76 px gap from a spawn at a whole pixel, lined up by a hop": (
+    WIDEST_FROM_A_WHOLE_PIXEL: (
         gap(DEFAULT_LIMITS.coyote_gap_px),
         hop_then(hold(jumps=[(0, HOP_TICKS), (LINED_UP_PRESS, 40)]))),
     "76 px gap to the left from a spawn at a whole pixel, lined up by a hop": (
@@ -118,7 +122,7 @@ KNOWN: dict[str, tuple[Level, Script]] = {
     "74 px gap beside a lift": (beside_a_lift(coyote_gap(), 74),
                                 hold(jumps=[(COYOTE_PRESS, 40)])),
     "44 px ledge": (ledge(DEFAULT_LIMITS.ledge_px), hold(jumps=[(100, 40)])),
-    "pit under spikes, jump held 7 ticks": (pit_under_spikes(), hold(jumps=[(113, 7)])),
+    PIT_UNDER_SPIKES: (pit_under_spikes(), hold(jumps=[(113, 7)])),
 }
 
 
@@ -126,8 +130,8 @@ KNOWN: dict[str, tuple[Level, Script]] = {
 LOSE: dict[str, list[Script]] = {
     "76 px gap, jump on the last coyote tick": [
         hold(jumps=[(LAST_COYOTE_PRESS - 1, 40)]), hold(jumps=[(LAST_COYOTE_PRESS + 1, 40)])],
-    "pit under spikes, jump held 7 ticks": [hold(jumps=[(113, 6)]), hold(jumps=[(113, 8)])],
-    "76 px gap from a spawn at a whole pixel, lined up by a hop": [
+    PIT_UNDER_SPIKES: [hold(jumps=[(113, 6)]), hold(jumps=[(113, 8)])],
+    WIDEST_FROM_A_WHOLE_PIXEL: [
         *(hold(jumps=[(press, 40)]) for press in range(100, 130)),  # no hop: no press wins
         hop_then(hold(jumps=[(0, HOP_TICKS), (LINED_UP_PRESS - 1, 40)])),
         hop_then(hold(jumps=[(0, HOP_TICKS), (LINED_UP_PRESS + 1, 40)]))],
@@ -136,13 +140,20 @@ LOSE: dict[str, list[Script]] = {
 }
 
 
+@functools.cache  # the search is bounded by work, not time: one solving serves every test
+def solved(name: str) -> tuple[Level, Solution]:
+    """A known map, by name, and what :func:`solve` finds on it at the default effort."""
+    level = KNOWN[name][0]
+    return level, solve(level)
+
+
 @pytest.mark.parametrize("name", sorted(KNOWN))
 def test_each_known_map_is_won_by_its_script_and_solved_within_its_own_budget(
         name: str) -> None:
     level, script = KNOWN[name]
     assert play(level, script, ticks=2_000).won
     assert not any(play(level, late, ticks=2_000).won for late in LOSE.get(name, []))
-    solution = solve(level)
+    _, solution = solved(name)
     assert solution.found and solution.own_budget, solution.moves_tried
     assert solution.moves_tried <= solution.budget
     assert replay(level.path, solution.held, level)[0]
@@ -152,9 +163,9 @@ def test_the_pit_under_spikes_is_solved_by_a_jump_held_an_exact_number_of_ticks(
     """Its one winning jump is held 7 ticks (test_the_pit_under_spikes_needs_one_exact_jump):
     the plain moves hold jump for whole moves of 6 ticks and miss it; the second stage
     releases it on each tick of the rise."""
-    level = pit_under_spikes()
+    level, solution = solved(PIT_UNDER_SPIKES)
+    assert level == pit_under_spikes()
     assert play(level, hold(jumps=[(113, 7)])).won  # the witness
-    solution = solve(level)
     assert solution.found and solution.own_budget
     assert solution.moves_tried > solution.budget * PLAIN_SHARE  # found in the second stage
     assert replay(level.path, solution.held, level)[0]
@@ -172,8 +183,8 @@ def test_the_widest_gap_from_a_whole_pixel_is_solved_by_lining_up_the_run() -> N
     """No run from the spawn at a whole pixel puts the last tick on the ground where a jump
     crosses the 76 px gap; the second stage lines the run up with a hop, and its route
     leaves the ground before the run to the edge."""
-    level = gap(DEFAULT_LIMITS.coyote_gap_px)
-    solution = solve(level)
+    level, solution = solved(WIDEST_FROM_A_WHOLE_PIXEL)
+    assert level == gap(DEFAULT_LIMITS.coyote_gap_px)
     assert solution.found and solution.own_budget, solution.moves_tried
     assert solution.moves_tried > solution.budget * PLAIN_SHARE  # found in the second stage
     pressed = [tick for tick, held in enumerate(solution.held)
@@ -183,8 +194,8 @@ def test_the_widest_gap_from_a_whole_pixel_is_solved_by_lining_up_the_run() -> N
 
 def test_a_map_not_decided_says_the_budget_it_was_given_and_the_moves_it_tried() -> None:
     """A gap one pixel wider than the widest (which no jump crosses), with an enemy far
-    behind the spawn, which the pixel-exact proof does not cover: the search spends
-    exactly this map's own budget, and says it."""
+    behind the spawn, within the player's reach, which the pixel-exact proof does not
+    cover: the search spends exactly this map's own budget, and says it."""
     level = far_from_an_enemy(gap(DEFAULT_LIMITS.coyote_gap_px + 1))
     verdict = judge(level, Effort())
     assert verdict.kind is Kind.UNDECIDED and verdict.solution is not None

@@ -597,6 +597,28 @@ def test_every_respawn_the_game_puts_under_a_lift_lies_in_the_bound_the_proof_us
     assert len(seen) > 10  # the lift moves it about
 
 
+def test_a_respawn_deep_in_rock_lies_in_the_bound_the_proof_uses() -> None:
+    """A flag deep in rock, a small lift's route crossing its foot: the game puts a player
+    coming back at the nearest free place, 161.5 px left, off the map's side; a place free
+    of the tiles and of the route, 169 px away up and to the right, is what the proof finds
+    first, and the range it starts the player from still holds the game's place."""
+    pockets = {(18, 10), (19, 4)}
+    rock = [Box(c * TILE, r * TILE, TILE, TILE) for c in range(32) for r in range(32)
+            if (c, r) not in pockets]
+    lift = PlatformSpec(Route(((150.0, 250.0), (150.0, 262.0))), 8.0, 8.0, 40.0)
+    level = level_from_boxes(32, 32, rock, Box(290, 162, 12, 14), [Box(304, 64, 16, 16)],
+                             platforms=(lift,), checkpoints=(Box(149.5, 241.25, 12, 32),))
+    (_, start) = starts(World(level))
+    assert start.moved is not None
+    world = World(level)
+    for _ in range(30):
+        world.step(frozenset())
+        place = world._checkpoint_spawn(0, world.solids)
+        assert place == Box(-12, 259.25, 12, 14)
+        assert start.moved.left <= place.x <= start.moved.right
+        assert start.moved.top <= place.y <= start.moved.bottom
+
+
 def test_a_respawn_a_platform_may_move_without_a_bound_leaves_the_map_not_decided(
         monkeypatch: pytest.MonkeyPatch) -> None:
     """Where no bound is found for where the flag may put the player, the proof says so

@@ -32,6 +32,7 @@ def test_a_desktop_smaller_than_the_game_still_gets_a_window() -> None:
 def test_fitting_sizes_the_window_to_its_scale_of_the_desktop() -> None:
     from pygame._sdl2.video import Window
 
+    pygame.display.quit()  # a scaled window is made afresh, as the game's own is
     pygame.display.init()
     pygame.display.set_mode((VIEW_W_PX, VIEW_H_PX), pygame.SCALED | pygame.RESIZABLE)
     window = Window.from_display_module()

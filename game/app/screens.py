@@ -109,7 +109,6 @@ LOCK_BODY_PX = (7, 5)  # the padlock's body, width and height
 LOCK_SHACKLE_H_PX = 3  # how far its shackle rises above the body
 
 CREDITS_SCROLL_PX_S = 16  # how fast the credits roll up the screen
-CREDITS_TOP_PX = 34  # the rolling lines pass under the heading and vanish above this row
 CREDITS_BOTTOM_GAP_PX = 34  # they rise from this far above the bottom, over the runners
 CREDITS_STOP_ROW_PX = 96  # the last line stops rising when it reaches this row
 CREDITS_ROLE_GAP_PX = 6  # between one credit and the next
@@ -592,7 +591,9 @@ def credits_lines(font: pygame.font.Font, width: int) -> list[tuple[str, Color, 
 def draw_credits(target: pygame.Surface, assets: Assets, frame: int) -> None:
     """The credits after the win: over the title's drifting sky and running hero, the lines
     roll up from the bottom at :data:`CREDITS_SCROLL_PX_S` and stop when the thanks reach
-    :data:`CREDITS_STOP_ROW_PX`. ``frame`` counts from when the credits came up, at
+    :data:`CREDITS_STOP_ROW_PX`. They are clipped to the screen below the heading (its
+    letters, rule and room, :func:`heading_h` tall), so they pass under it and vanish there,
+    never drawn over or above it. ``frame`` counts from when the credits came up, at
     :data:`game.sim.sprite.ANIMATION_HZ` per second."""
     _draw_sky(target, assets, frame)
     dim(target)
@@ -604,11 +605,12 @@ def draw_credits(target: pygame.Surface, assets: Assets, frame: int) -> None:
     risen = math.floor(frame * CREDITS_SCROLL_PX_S / ANIMATION_HZ)
     bottom = height - CREDITS_BOTTOM_GAP_PX
     y = max(bottom - risen, CREDITS_STOP_ROW_PX - roll_h)
+    top = HEADING_RULE_GAP_PX + heading_h(assets)  # the first row below the heading's room
     clip = target.get_clip()
-    target.set_clip(pygame.Rect(0, CREDITS_TOP_PX, width, bottom - CREDITS_TOP_PX))
+    target.set_clip(pygame.Rect(0, top, width, bottom - top).clip(clip))
     for text, color, gap in lines:
         y += gap
-        if CREDITS_TOP_PX - line_h < y < bottom:
+        if top - line_h < y < bottom:
             draw_text(target, font, text, (width // 2, y), color, anchor="midtop")
         y += line_h
     if y - line_h <= CREDITS_STOP_ROW_PX:  # the roll has stopped: say how to leave

@@ -23,8 +23,9 @@ level ends, unless ``--go-on``).
 
 The window opens at the largest whole-number scale of the 320x180 screen that takes at most
 :data:`DESKTOP_SHARE_PERCENT` of the desktop each way (room for a title bar and a taskbar),
-centred on it (:func:`window_scale`, :func:`fit_window`); whole numbers keep every pixel
-square. F11 (or ``fullscreen`` in the settings) fills the screen instead.
+centred on it (:func:`window_scale`, :func:`window_size`, :func:`fit_window`; the lab's window
+opens by the same rule); whole numbers keep every pixel square. F11 (or ``fullscreen`` in the
+settings) fills the screen instead.
 """
 
 from __future__ import annotations
@@ -123,18 +124,28 @@ def window_scale(desktop: tuple[int, int], view: tuple[int, int] = (VIEW_W_PX, V
     return max(1, min(room_w // view[0], room_h // view[1]))
 
 
-def fit_window(window: Window) -> None:
-    """Size the window by :func:`window_scale` for the desktop it is on and centre it there.
-    (``pygame.SCALED`` alone would fill the whole desktop.)
+def window_size(desktop: tuple[int, int], view: tuple[int, int] = (VIEW_W_PX, VIEW_H_PX)
+                ) -> tuple[int, int]:
+    """The window for a screen of ``view`` pixels on ``desktop``: the screen at
+    :func:`window_scale`. The game (320x180) and the lab (800x450) both open by it.
+
+    >>> window_size((1920, 1080)), window_size((1920, 1080), (800, 450))
+    ((1600, 900), (1600, 900))
+    """
+    scale = window_scale(desktop, view)
+    return view[0] * scale, view[1] * scale
+
+
+def fit_window(window: Window, view: tuple[int, int] = (VIEW_W_PX, VIEW_H_PX)) -> None:
+    """Size the window of a screen of ``view`` pixels by :func:`window_size` for the desktop
+    it is on and centre it there. (``pygame.SCALED`` alone would fill the whole desktop.)
 
     ``window`` is ``Window.from_display_module()``, kept for as long as the window is open:
     SDL holds a pointer to that object and hands it to every window event, so letting it be
     collected crashes the next event."""
     desktops = pygame.display.get_desktop_sizes()
-    desktop = desktops[window.display_index] if window.display_index < len(desktops) else (
-        VIEW_W_PX, VIEW_H_PX)
-    scale = window_scale(desktop)
-    window.size = (VIEW_W_PX * scale, VIEW_H_PX * scale)
+    desktop = desktops[window.display_index] if window.display_index < len(desktops) else view
+    window.size = window_size(desktop, view)
     window.position = WINDOWPOS_CENTERED
 
 

@@ -147,9 +147,10 @@ def walls_text(rows: list[Row]) -> str:
 
     wins = walls.lookup_wins_from(rows)
     return (
-        "**Walls** (`walls.png`). Across, the map size in tiles (the first level's tiles "
-        "repeated to fill it; the labels give the number of wall rectangles); up, the time "
-        "for one body's query, both on log scales. The tile-grid lookup only visits the cells "
+        "**Walls** (`walls.png`). Across, the map size in tiles (the first screens of "
+        "First Steps repeated to fill it; the labels give the number of wall rectangles); "
+        "up, the time for one body's query, both on log scales. The tile-grid lookup only "
+        "visits the cells "
         f"under the body: {cost(walls.LOOKUP, small):.1f} µs on {small} and "
         f"{cost(walls.LOOKUP, big):.1f} µs on {big}, flat. `spritecollide` over every wall "
         f"sprite grows with the walls, from {cost(walls.SPRITES, small):.1f} µs to "

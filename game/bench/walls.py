@@ -11,9 +11,10 @@ What it teaches:
     gives the few cells it covers, so the lookup costs the same on a map of 500 tiles or of
     128,000. Scanning every wall costs in proportion to the number of walls, however fast
     each single test is (``collidelistall`` runs its loop in C and still grows).
-  * **The maps** are the first shipped level's tiles (solid, one-way and hazard, with their
-    collision rectangles) repeated, or cut, to fill each size, so the share of solid tiles
-    is the shipped level's at every size.
+  * **The maps** are one pattern of tiles, :data:`PATTERN` (the first screens of First
+    Steps as the game first shipped it: ground, ledges and pits, all whole solid tiles),
+    repeated, or cut, to fill each size, so the share of solid tiles is the same at every
+    size and the maps stay the same when the shipped levels change.
   * **The query** is the player's hitbox (12 x 14 px) at random whole-pixel places on the
     map. Every method must find exactly the same walls, and the bench checks that.
 """
@@ -35,9 +36,8 @@ from game.bench.records import Row, values
 from game.bench.sizes import Sizes
 from game.bench.timing import Case, interleaved
 from game.collision.aabb import Box
-from game.collision.shapes import Entry, TileShape
+from game.collision.shapes import Entry, TileKind, TileShape
 from game.collision.tile_grid import TileGrid
-from game.levels import FIRST_LEVEL, load_level
 
 CHART = "walls"
 SEED = 4
@@ -47,6 +47,21 @@ LOOKUP = "tile grid (TileGrid.entries_in)"
 SPRITES = "spritecollide over every wall sprite"
 RECTS = "Rect.collidelistall over every wall rect"
 SCAN_TESTS = 200_000   # wall tests a scanning method makes per timed call, at most
+PATTERN = (  # the tiles every map here is made of ('#' a solid tile), from the top row down
+    "....................................................................................",
+    "....................................................................................",
+    "....................................................................................",
+    "....................................................................................",
+    ".....................................................###............................",
+    "....................................................................................",
+    ".......................###........#######...........................................",
+    "...........................................................................#........",
+    "..............##..........................................................##........",
+    "############################..########################..############################",
+    "############################..########################..############################",
+    "############################..########################..############################",
+)
+TILE_PX = 16  # the pattern's tile size, px
 
 
 class Wall(pygame.sprite.Sprite):
@@ -141,8 +156,14 @@ class WallMap:
 
 
 def pattern() -> TileGrid:
-    """The first shipped level's tiles: what every map here is made of."""
-    return load_level(FIRST_LEVEL).grid
+    """:data:`PATTERN` as a map of whole-tile solid shapes: what every map here is made of."""
+    grid = TileGrid(len(PATTERN[0]), len(PATTERN), TILE_PX, TILE_PX)
+    for row, line in enumerate(PATTERN):
+        for col, char in enumerate(line):
+            if char == "#":
+                box = Box(col * TILE_PX, row * TILE_PX, TILE_PX, TILE_PX)
+                grid.put(col, row, TileShape(box, TileKind.SOLID, col, row))
+    return grid
 
 
 def measure(sizes: Sizes) -> list[Row]:

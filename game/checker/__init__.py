@@ -18,8 +18,10 @@ Its parts, in the order a check runs them:
 * :mod:`~game.checker.verdict`: solved, impossible or not decided, and nothing else.
 * The proofs of impossible: :mod:`~game.checker.reachable` (a generous flood fill of all the
   player could touch, every mechanic bounded) and :mod:`~game.checker.jump_envelope` (the
-  pixel-exact reach, exact at the measured limits), both from :mod:`~game.checker.reach`
-  (how high and far the player jumps, measured in the game's own tick).
+  pixel-exact reach, exact at the measured limits, kept clear of where every enemy and
+  moving platform can be: :mod:`~game.checker.mechanic_bounds`), both from
+  :mod:`~game.checker.reach` (how high and far the player jumps, measured in the game's own
+  tick).
 * The search for a win: :mod:`~game.checker.solver` (the game's own tick, searched),
   :mod:`~game.checker.search_budget` (the moves a map may take, growing with the map),
   :mod:`~game.checker.search_key` (when two states are the same) and

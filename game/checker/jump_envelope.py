@@ -35,13 +35,22 @@ own :meth:`~game.sim.world.World.step`, then let walls only ever help the proof'
 * **Starts**: the spawn, and each Checkpoint's respawn place once the flag can be counted.
   Lives and spikes only send the player back to a start, so they widen nothing.
 
+* **Enemies and moving Platforms** are left out of the reach: they change the player's
+  tick only by a touch (a stomp bounces, a touch hurts; a platform is stood on, pushes,
+  carries, crushes), and go their own way whatever the player does. So the reach is
+  worked out with the walls alone, then every launch's envelope is tested against where
+  each of them can ever be, grown by touching distance (:mod:`game.checker.mechanic_bounds`):
+  if none comes near, the game with them plays as the game without them wherever the
+  player can be, and the proof stands. Each one the envelope comes near, each enemy with
+  no bound, and a counted Checkpoint whose respawn place a platform's route could move,
+  makes it prove nothing and is named (:attr:`Exact.unbounded`); the cell fill of
+  :mod:`game.checker.reachable`, which follows stomps and rides, may still prove the map.
+
 Heights get :data:`SLACK_PX` more than measured (the game's float sums at another height
 may round apart by far less); sideways moves are the game's own float sums, so the widest
-gap is exact even where a jump carries a whole number of pixels. Mechanics it does not
-bound make it prove nothing and say which (:attr:`Exact.unbounded`): moving Platforms
-(they push and carry) and enemies (a stomp bounces); the cell fill covers those. Its work
-is counted, never timed: past :data:`MAX_PAIRS` pairs of a launch and a place to land or
-touch, it proves nothing.
+gap is exact even where a jump carries a whole number of pixels. Its work is counted,
+never timed: past :data:`MAX_PAIRS` pairs of a launch and a place to land or touch (an
+Exit, a flag, or a box of an enemy's or a platform's bound), it proves nothing.
 
 >>> from game.sim.tuning import Tuning
 >>> envelope = air_envelope(Tuning())
@@ -53,12 +62,14 @@ from __future__ import annotations
 
 import bisect
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import lru_cache
 from itertools import pairwise
 from pathlib import Path
 
-from game.checker.reachable import Cell, jump_rise, starts
+from game.checker.mechanic_bounds import enemy_bounds, platform_bounds, respawn_moved_by
+from game.checker.reachable import Cell, FillWork, jump_rise, starts
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind, TileShape
 from game.collision.tile_grid import TileGrid
@@ -306,7 +317,8 @@ def _ceilings(grid: TileGrid) -> list[Surface]:
 @dataclass
 class Exact:
     """What the pixel-exact reach found: whether an Exit is touched, the runs of tops
-    reached, and what it does not bound (while there is any, it proves nothing)."""
+    reached, and what it does not bound: the enemies and platforms it comes within
+    touching distance of, or could not bound (while there is any, it proves nothing)."""
 
     touches_exit: bool
     reached: list[Surface] = field(default_factory=list)
@@ -333,39 +345,35 @@ class _Launch:
 
 def exact_reach(world: World) -> Exact:
     """The pixel-exact reach of ``world``'s level with its tuning, from the spawn and every
-    Checkpoint's respawn place once that flag can be counted."""
+    Checkpoint's respawn place once that flag can be counted: worked out with the walls
+    alone, then kept clear of every enemy and moving platform
+    (:mod:`game.checker.mechanic_bounds`); each it comes within touching distance of is
+    named in :attr:`Exact.unbounded`."""
     level, tuning = world.level, world.tuning
-    unbounded = []
-    if level.platforms:
-        unbounded.append("a moving Platform (it pushes and carries)")
-    if level.enemies:
-        unbounded.append("an enemy (a stomp bounces the player)")
     envelope, rising = air_envelope(tuning), air_envelope(tuning, rising=True)
     if envelope is None or rising is None:
-        unbounded.append("this map's physics (a jump could not be measured within "
-                         f"{MAX_ENVELOPE_TICKS:,} ticks)")
-    if unbounded or envelope is None or rising is None:
-        return Exact(False, unbounded=unbounded)
+        return Exact(False, unbounded=["this map's physics (a jump could not be measured "
+                                       f"within {MAX_ENVELOPE_TICKS:,} ticks)"])
     grid = level.grid
     w, h = world.spawn.w, world.spawn.h  # the player's box (a Player object sets its size)
     tops = surfaces(grid, w)
     ceilings = _ceilings(grid)
     ceiling_heights = [run.top for run in ceilings]
     exits = list(level.exits)
-    flags = [(Box(f.x - 1, f.top - f.h, f.w + 2, 2 * f.h), start) for f, start
+    flags = [(Box(f.x - 1, f.top - f.h, f.w + 2, 2 * f.h), f, start) for f, start
              in zip(level.checkpoints, starts_of(world)[1:], strict=False)]
     queue = [_Launch(b.x, b.x, b.bottom) for b in starts_of(world)[:1]]
     left = list(tops)
     reached: list[Surface] = []
     result = Exact(False, reached, gap_px=envelope.widest_gap_px(),
                    ledge_px=envelope.highest_ledge_px())
+    touchers: list[Callable[[Box], bool]] = []  # each launch's test: can its body overlap?
     pairs = 0
     while queue:
         launch = queue.pop()
         pairs += len(left) + len(exits) + len(flags)
         if pairs > MAX_PAIRS:
-            return Exact(False, unbounded=[f"a map with more than {MAX_PAIRS:,} pairs of a "
-                                           "place to jump from and a floor to land on"])
+            return _too_many()
         air = rising if launch.rising else envelope
         corners = _corners(ceilings, ceiling_heights, launch, w, h, air)
         sweep = Sweep(air, w, launch.low, launch.high, launch.standing, corners)
@@ -375,12 +383,16 @@ def exact_reach(world: World) -> Exact:
             ticks = air.last_tick_at(launch.top - h - region.bottom)
             return ticks >= 0 and sweep.overlaps(ticks, region.left, region.right)
 
+        touchers.append(touches)
         if any(touches(goal) for goal in exits):
             result.touches_exit = True
             return result
-        for region, start in list(flags):
+        for region, flag, start in list(flags):
             if touches(region):
-                flags.remove((region, start))
+                moved = respawn_moved_by(world, flag)
+                if moved is not None:
+                    return Exact(False, unbounded=[moved])
+                flags.remove((region, flag, start))
                 queue.append(_Launch(start.x, start.x, start.bottom))
         for surface in list(left):
             ticks = air.last_tick_at(launch.top - surface.top)
@@ -389,11 +401,26 @@ def exact_reach(world: World) -> Exact:
                 reached.append(surface)
                 queue.append(_Launch(surface.left, surface.right, surface.top, True,
                                      surface.one_way))
+    if level.enemies or level.platforms:
+        bounds, result.unbounded = enemy_bounds(world, FillWork())
+        bounds += platform_bounds(world)
+        pairs += len(touchers) * sum(len(bound.boxes) for bound in bounds)
+        if pairs > MAX_PAIRS:
+            return _too_many()
+        result.unbounded += [bound.name for bound in bounds
+                             if any(touches(box) for box in bound.boxes for touches in touchers)]
     return result
 
 
+def _too_many() -> Exact:
+    return Exact(False, unbounded=[f"a map with more than {MAX_PAIRS:,} pairs of a place to "
+                                   "jump from and a place to land on, touch or keep clear of"])
+
+
 def starts_of(world: World) -> list[Box]:
-    """The spawn, then each Checkpoint's respawn place (tiles alone: no platforms here)."""
+    """The spawn, then each Checkpoint's respawn place, found with the tiles alone (where a
+    platform could move one, :func:`~game.checker.mechanic_bounds.respawn_moved_by` says
+    so before it is used)."""
     return [start.box for start in starts(world)]
 
 

@@ -159,7 +159,7 @@ def envelope_of(level: Level, tuning: Tuning, enemies: bool = True) -> Envelope 
     """The envelope for ``level`` played with ``tuning``; None when gravity does not bring a
     jump back down (then no bound on the reach can be given). ``enemies``: whether the
     level's enemies add a stomp to the rise (False for an enemy's own envelope, which
-    :func:`enemy_cells` works out)."""
+    :func:`enemy_heads` and :func:`enemy_cells` work out)."""
     if tuning.gravity_px_s2 <= 0 or tuning.max_fall_speed_px_s <= 0:
         return None
     if enemies and level.enemies and tuning.stomp_bounce_px_s > tuning.jump_speed_px_s:
@@ -255,8 +255,7 @@ def starts(world: World) -> list[Start]:
         if not any(region.overlaps(standing) for region in regions):
             found.append(Start(place, columns))
             continue
-        area = moved_respawns(grid, standing, regions, max(
-            [max(spec.width_px, spec.height_px) for spec in level.platforms]))
+        area = moved_respawns(grid, standing, regions)
         col, row = math.floor(flag.x / grid.tile_w), math.floor(flag.y / grid.tile_h)
         found.append(Start(place, columns, None if area is not None else
                            f"a respawn moved by a moving Platform (the Checkpoint at tile "
@@ -265,35 +264,37 @@ def starts(world: World) -> list[Start]:
     return found
 
 
-def moved_respawns(grid: TileGrid, standing: Box, regions: list[Box],
-                   platform_px: float) -> Box | None:
+def moved_respawns(grid: TileGrid, standing: Box, regions: list[Box]) -> Box | None:
     """The range of top-left corners where the game may put a player coming back to a flag
     whose place (``standing``) some platforms' routes cross (``regions``, each route's box
-    grown by its platform's size; ``platform_px``: the longest side of a platform), or
-    None if no bound is found.
+    grown by its platform's size), or None if no bound is found.
 
     The game (:func:`~game.collision.free_place.nearest_free_place`, with the platforms
-    where they are when the flag counts) widens its window round the place until some
-    candidate in it is free, each coordinate where it was or flush with a face of a wall
-    touching the window. Once the window holds a candidate of the tiles' faces alone that is
-    free of the tiles and of every route, it is free wherever the platforms are: the game
-    stops there or sooner, with each coordinate within the window, a wall's size and the
-    body's own size of where it was."""
+    where they are when the flag counts) tries, in a window it widens round the place, each
+    coordinate where it was or flush with a face of a wall in the window, and stops at the
+    nearest free place, or at the latest at the first window that holds the whole map, at
+    the nearest place it tried there. A candidate of the tiles' faces alone, in one of those
+    windows, that is free of the tiles and of every route is free wherever the platforms
+    are: the game stops no farther from the place than that candidate, in x and in y."""
     w, h = standing.w, standing.h
-    search, limit = 64.0, max(grid.width_px, grid.height_px) + w + h  # as the game's
-    while search <= 2 * limit:
+    search, whole_map = 64.0, max(grid.width_px, grid.height_px)  # as the game's
+    while True:
         window = Box(standing.x - search, standing.y - search, w + 2 * search, h + 2 * search)
         tiles = [s.box for s in grid.shapes_in(window) if s.kind is TileKind.SOLID]
         xs = {standing.x} | {b.left - w for b in tiles} | {b.right for b in tiles}
         ys = {standing.y} | {b.top - h for b in tiles} | {b.bottom for b in tiles}
-        around = Box(window.x - w, window.y - h, window.w + 2 * w, window.h + 2 * h)
+        # a candidate ends at most a tile and its own size past the window
+        around = Box(window.x - w - grid.tile_w, window.y - h - grid.tile_h,
+                     window.w + 2 * (w + grid.tile_w), window.h + 2 * (h + grid.tile_h))
         walls = [*regions, *(s.box for s in grid.shapes_in(around) if s.kind is TileKind.SOLID)]
-        if any(not any(Box(x, y, w, h).overlaps(b) for b in walls) for x in xs for y in ys):
-            reach_x = search + max(platform_px, grid.tile_w) + w
-            reach_y = search + max(platform_px, grid.tile_h) + h
-            return Box(standing.x - reach_x, standing.y - reach_y, 2 * reach_x, 2 * reach_y)
+        free = [math.hypot(x - standing.x, y - standing.y) for x in xs for y in ys
+                if not any(Box(x, y, w, h).overlaps(b) for b in walls)]
+        if free:
+            reach = min(free)
+            return Box(standing.x - reach, standing.y - reach, 2 * reach, 2 * reach)
+        if search >= whole_map:
+            return None
         search *= 2
-    return None
 
 
 @dataclass
@@ -347,6 +348,10 @@ def _flood(world: World, fill: _Fill) -> Reach:
 
 def _standing(world: World, box: Box) -> bool:
     return ground_under(world.solids, box) is not None
+
+
+_NEIGHBOURS = tuple((dc, dr) for dc in (-1, 0, 1) for dr in (-1, 0, 1)
+                    if dc or dr)  # the eight cells round a cell, in the order an arc visits them
 
 
 class _Fill:
@@ -538,36 +543,50 @@ class _JumpFill(_Fill):
 
     def _arc(self, start: Cell, feet_y: float, max_rise: float = math.inf) -> None:
         """Every open cell a jump from ``start`` (feet at ``feet_y``) could pass through,
-        rising at most ``max_rise`` (0: a fall from rest)."""
+        rising at most ``max_rise`` (0: a fall from rest). The sideways distance to each
+        column and the most a jump rises there are worked out once per arc, and
+        :meth:`open` is written out in the loop: this loop is most of a check's time."""
         grid, env = self.grid, self.envelope
         tile_w, tile_h = grid.tile_w, grid.tile_h
+        cols, rows, top = grid.cols, grid.rows, -self.sky_rows
+        closed, moves, spend = self.closed, self.moves, self.work.spend
+        reach_x_px = env.reach_x_px
         x_lo, x_hi = start[0] * tile_w, (start[0] + 1) * tile_w  # the feet's x is in here
+        by_column: dict[int, tuple[float, float]] = {}  # (sideways distance, rise)
         local: set[Cell] = {start}
         queue: deque[Cell] = deque([start])
         while queue:
-            col, row = queue.popleft()
-            self.work.spend(8)
-            for dc in (-1, 0, 1):
-                for dr in (-1, 0, 1):
-                    near = (col + dc, row + dr)
-                    if (dc == 0 and dr == 0) or not self.open(near):
-                        continue
-                    c_lo, c_hi = near[0] * tile_w, (near[0] + 1) * tile_w
-                    distance = max(0.0, c_lo - x_hi, x_lo - c_hi)
-                    lowest_y = (near[1] + 1) * tile_h  # the cell's bottom: the least rise
-                    if lowest_y <= feet_y - min(max_rise, env.rise_at(distance)):
-                        continue  # wholly above what a jump reaches at that distance
-                    self.moves.setdefault((col, row), set()).add(near)
-                    if near in local:
-                        continue
-                    local.add(near)
-                    depth = near[1] * tile_h - feet_y  # how far below take-off, at least
-                    if depth >= FALL_DEPTH_PX:
-                        self._start_fall(near)
-                    elif distance > env.reach_x_px:
-                        continue
-                    else:
-                        queue.append(near)
+            cell = queue.popleft()
+            col, row = cell
+            spend(8)
+            leads_to: set[Cell] | None = None
+            for dc, dr in _NEIGHBOURS:
+                near = (col + dc, row + dr)
+                if not (0 <= near[0] < cols and top <= near[1] < rows) or near in closed:
+                    continue
+                known = by_column.get(near[0])
+                if known is None:
+                    c_lo = near[0] * tile_w
+                    distance = max(0.0, c_lo - x_hi, x_lo - c_lo - tile_w)
+                    known = by_column[near[0]] = (distance, min(max_rise,
+                                                                env.rise_at(distance)))
+                distance, rise = known
+                lowest_y = (near[1] + 1) * tile_h  # the cell's bottom: the least rise
+                if lowest_y <= feet_y - rise:
+                    continue  # wholly above what a jump reaches at that distance
+                if leads_to is None:
+                    leads_to = moves.setdefault(cell, set())
+                leads_to.add(near)
+                if near in local:
+                    continue
+                local.add(near)
+                depth = near[1] * tile_h - feet_y  # how far below take-off, at least
+                if depth >= FALL_DEPTH_PX:
+                    self._start_fall(near)
+                elif distance > reach_x_px:
+                    continue
+                else:
+                    queue.append(near)
         for cell in local:
             self._reach_cell(cell)
 
@@ -717,3 +736,23 @@ def enemy_heads(world: World, work: FillWork) -> list[tuple[float, float, float]
             heads.append((col * grid.tile_w - w / 2, (col + 1) * grid.tile_w + w / 2,
                           row * grid.tile_h - h))
     return heads
+
+
+def enemy_cells(world: World, number: int, work: FillWork) -> set[Cell] | None:
+    """Every cell the middle of enemy ``number``'s feet can ever be in: a jump fill of its
+    own body from where the world puts it, at its own speed with its hop (a walker's rise
+    is nothing), walking off every ledge (where the game turns it back), falling, carried
+    and pushed by the platforms as the player is. None when physics give no bound; the
+    steps are counted in ``work`` (:class:`FillTooBig` past its budget)."""
+    spec, level, tuning = world.level.enemies[number], world.level, world.tuning
+    box = world.enemy_by_number[number].box
+    speed = tuning.enemy_speed_px_s if spec.speed_px_s is None else spec.speed_px_s
+    hopper = spec.kind == "hopper"
+    own = replace(tuning, run_speed_px_s=abs(speed),
+                  jump_speed_px_s=tuning.hopper_jump_speed_px_s if hopper else 0.0)
+    envelope = envelope_of(level, own, enemies=False)
+    if envelope is None:
+        return None
+    fill = _JumpFill(level, envelope, box, work)
+    fill.seed(box, _standing(world, box))
+    return fill.run()

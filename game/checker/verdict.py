@@ -11,13 +11,17 @@ What it teaches: keep what was *proven* apart from what was merely *not found*.
 * **Impossible**: no open path of cells joins the spawn and an Exit, or the Exit lies
   outside everything the player's jumps could touch: by the cell fill, or by the
   pixel-exact reach of :mod:`game.checker.jump_envelope` (a gap or a ledge one pixel past
-  the measured limits). All are over-approximations, so they never call a winnable map
-  impossible, and an Exit any of them leaves out is out of reach. A reach is a proof only
-  when it bounds every mechanic on the way (:attr:`game.checker.reachable.Reach.unbounded`,
+  the measured limits; on a map with enemies or moving Platforms, only while none of them
+  can ever come within touching distance of where the player can be). All are
+  over-approximations, so they never call a winnable map impossible, and an Exit any of
+  them leaves out is out of reach. A reach is a proof only when it bounds every mechanic
+  on the way (:attr:`game.checker.reachable.Reach.unbounded`,
   :attr:`game.checker.jump_envelope.Exact.unbounded`): where one is left unbounded the map
-  is not decided, and the line names the mechanic. Where one tile layer's Solid tiles
-  close the way (taking them away opens it, to the same proof), the line names the layer
-  and points at one of its tiles.
+  is not decided, and the line names the mechanic (for the pixel-exact reach, the enemy
+  or the platform by the tile it starts at). Where one tile layer's Solid tiles
+  close the way (taking them away opens it, to the same proof; for the pixel-exact reach,
+  an Exit then comes in reach: a layer that only walls an enemy in is not named), the line
+  names the layer and points at one of its tiles.
 * **Not decided**: the search spent its budget (or its seconds) without a route, and
   nothing proved the map impossible. That is said as such, with the bound, the work done,
   the furthest place reached and how to search further; it never reads as solved.
@@ -102,7 +106,9 @@ def _prove(level: Level) -> tuple[Verdict | None, Reach | None, list[str]]:
             return _out_of_reach(reach.nearest_to_exit(), culprit, reach), reach, []
     exact = exact_reach(world)
     if exact.proves:
-        culprit = _closing_layer(world, lambda w: exact_reach(w).proves)
+        # a layer is to blame only where a way to an Exit opens without it (not where an
+        # enemy or a platform it walls off would come near the player)
+        culprit = _closing_layer(world, lambda w: not exact_reach(w).touches_exit)
         found = _out_of_reach(nearest_reached(exact, level), culprit, reach, exact)
         return found, reach, []
     return None, reach, exact.unbounded

@@ -49,7 +49,7 @@ VERDICTS: tuple[tuple[Color, str], ...] = (
 TEXT_PT = 20   # a size asked for; see :func:`font` for what draws it
 TITLE_PT = 28
 BIG_FROM_PT = 24  # sizes from this up get the big font
-LINE_GAP_PX = 4   # between rows of text
+LINE_GAP_PX = 3   # between rows of text
 
 _fonts: dict[bool, pygame.font.Font] = {}
 

@@ -23,19 +23,19 @@ from game.lab.scene import AREA, Layer, Scene
 
 RADIUS_PX = 50.0
 OTHER_RADIUS_PX = 60.0
-BLOCK = Box(AREA.x + 330, AREA.y + 230, 160, 110)
+BLOCK = Box(AREA.x + 290, AREA.y + 200, 160, 110)
 
 
 class Circles(Scene):
     name = "circles"
-    title = "squared distances, and the square box around a circle"
+    title = "squared distances; the square around a circle"
     keys_help = "drag the balls or the box"
     group = "narrow phase"
     draws = (Layer.SHAPES, Layer.BOUNDS, Layer.CONTACTS)
 
     def reset(self) -> None:
-        self.pos = {"block": (BLOCK.x, BLOCK.y), "ball": (AREA.x + 290.0, AREA.y + 190.0),
-                    "other": (AREA.x + 150.0, AREA.y + 160.0)}
+        self.pos = {"block": (BLOCK.x, BLOCK.y), "ball": (AREA.x + 250.0, AREA.y + 160.0),
+                    "other": (AREA.x + 110.0, AREA.y + 130.0)}
         self.meter = CostMeter()
 
     def ball(self) -> Circle:

@@ -20,9 +20,9 @@ from game.lab.scene import AREA, Layer, Scene
 LOG_SHOWN = 10
 SLIDER_W_PX, SLIDER_H_PX = 60.0, 60.0
 SLIDER_SPEED_PX_S = 90.0
-SLIDER_LEFT_X = AREA.x + 40.0
-SLIDER_RIGHT_X = AREA.x + 540.0
-BOXES = [Box(AREA.x + 110 + i * 90, AREA.y + 180 + (i % 2) * 40, 50, 70) for i in range(5)]
+SLIDER_LEFT_X = AREA.x + 20.0
+SLIDER_RIGHT_X = AREA.x + 430.0
+BOXES = [Box(AREA.x + 90 + i * 70, AREA.y + 150 + (i % 2) * 40, 50, 70) for i in range(5)]
 
 
 class Contacts(Scene):
@@ -36,7 +36,7 @@ class Contacts(Scene):
 
     def reset(self) -> None:
         self.pos = {str(i): (box.x, box.y) for i, box in enumerate(BOXES)}
-        self.pos["slider"] = (AREA.x + 300.0 - SLIDER_W_PX / 2, AREA.y + 200.0)
+        self.pos["slider"] = (AREA.x + 240.0 - SLIDER_W_PX / 2, AREA.y + 170.0)
         self.slider_vx = SLIDER_SPEED_PX_S
         self.tracker: ContactTracker[str] = ContactTracker(log_size=LOG_SHOWN)
         self.flood_lines = 0

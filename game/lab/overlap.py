@@ -17,7 +17,7 @@ from game.lab import canvas
 from game.lab.cost import CostMeter
 from game.lab.scene import AREA, Control, Layer, Scene
 
-WALL = Box(AREA.x + 330, AREA.y + 110, 60, 260)  # where the wall starts
+WALL = Box(AREA.x + 270, AREA.y + 80, 60, 240)  # where the wall starts
 PLAYER_W_PX, PLAYER_H_PX = 48.0, 72.0
 NUDGES = {pygame.K_LEFT: (-1.0, 0.0), pygame.K_RIGHT: (1.0, 0.0),
           pygame.K_UP: (0.0, -1.0), pygame.K_DOWN: (0.0, 1.0)}
@@ -74,7 +74,7 @@ class Overlap(Scene):
 
     def reset(self) -> None:
         self.pos = {"wall": (WALL.x, WALL.y),
-                    "player": (WALL.left - PLAYER_W_PX, AREA.y + 200)}  # flush: touching
+                    "player": (WALL.left - PLAYER_W_PX, AREA.y + 170)}  # flush: touching
         self.zero_width = False
         self.meter = CostMeter()
 

@@ -47,7 +47,7 @@ GRID, BRUTE = "grid, all pairs", "brute force, all pairs"  # timed every frame
 
 class PartyGrid(CrowdScene):
     name = "party-grid"
-    title = "the party grid: only bodies sharing a cell are tested"
+    title = "the party grid: only bodies in one cell are tested"
     keys_help = "hover a body; drag bodies"
     group = "broad phase"
     draws = (Layer.SHAPES, Layer.PAIRS, Layer.CONTACTS, Layer.CELLS)

@@ -24,21 +24,19 @@ from game.lab.cost import CostMeter
 from game.lab.scene import AREA, Control, Layer, Point, Scene
 
 TILE_PX = 32
-ORIGIN = (AREA.x + 6, AREA.y + 16)  # the map's (0, 0) on screen
+ORIGIN = (AREA.x + 6, AREA.y + 12)  # the map's (0, 0) on screen
 MAP = [
-    "..................",
-    "..................",
-    "..................",
-    "...........#......",
-    "...........#......",
-    "......---..#......",
-    "...........#...##.",
-    "..##.......#......",
-    "...........#......",
-    "#..........#.....#",
-    "#.....##...#.....#",
-    "#################.",
-    "##################",
+    "...............",
+    "...........#...",
+    "...........#...",
+    "......---..#...",
+    "...........#.##",
+    "..##.......#...",
+    "...........#...",
+    "#..........#..#",
+    "#.....##...#..#",
+    "##############.",
+    "###############",
 ]
 BODY_W_PX, BODY_H_PX = 20.0, 28.0
 RUN_PX_S = 150.0
@@ -72,7 +70,7 @@ class Platformer(Scene):
 
     def reset(self) -> None:
         self.grid = build_grid()
-        self.pos = {"body": (ORIGIN[0] + 250.0, ORIGIN[1] + 320.0 - BODY_H_PX)}
+        self.pos = {"body": (ORIGIN[0] + 250.0, ORIGIN[1] + 256.0 - BODY_H_PX)}
         self.vy = 0.0
         self.fast = False
         self.on_ground = False

@@ -49,13 +49,13 @@ def shadow_ends(axis: Point, through: Point, lo: float, hi: float,
 
 class Polygons(Scene):
     name = "polygons"
-    title = "convex polygons by SAT: axes, separating axis, push-out"
+    title = "convex polygons by SAT: axes and the push-out"
     keys_help = "drag shapes; Tab next axis; M push out"
     group = "narrow phase"
     draws = (Layer.SHAPES, Layer.BOUNDS, Layer.PAIRS, Layer.CONTACTS)
 
     def reset(self) -> None:
-        self.pos = {"a": (AREA.x + 220.0, AREA.y + 230.0), "b": (AREA.x + 360.0, AREA.y + 250.0)}
+        self.pos = {"a": (AREA.x + 180.0, AREA.y + 200.0), "b": (AREA.x + 320.0, AREA.y + 220.0)}
         self.shown_axis = 0
         self.follow = True  # show the separating axis until Tab picks one by hand
         self.mtv: Mtv | None = None

@@ -75,8 +75,8 @@ class Response(Scene):
         cols = 3
         for key in range(CRATES):
             w, h = rng.uniform(36, 70), rng.uniform(36, 70)
-            x = ARENA.x + 30 + (key % cols) * 180 + rng.uniform(0, 40)
-            y = ARENA.y + 20 + (key // cols) * 140 + rng.uniform(0, 30)
+            x = ARENA.x + 24 + (key % cols) * 140 + rng.uniform(0, 30)
+            y = ARENA.y + 16 + (key // cols) * 110 + rng.uniform(0, 20)
             heading = rng.uniform(0, 2 * math.pi)
             speed = rng.uniform(60, MAX_SPEED_PX_S)
             self.crates[key] = Crate(Box(x, y, w, h), DENSITY_KG_PX2 * w * h,
@@ -172,7 +172,7 @@ class Response(Scene):
         self.energy = energy
         a, b = self.crates[0], self.crates[1]
         normal = Vec(1.0, 0.0)
-        self.meter.time("one crate pair: separate + exchange", lambda: (
+        self.meter.time("a crate pair: separate + exchange", lambda: (
             separate(a.box, b.box, a.mass_kg, b.mass_kg),
             exchange(PointMass(a.mass_kg, a.velocity_px_s), PointMass(b.mass_kg,
                      b.velocity_px_s), normal, self.restitution, self.friction)))

@@ -29,13 +29,13 @@ SAMPLE_PX = 12.0
 
 class RotatedBox(Scene):
     name = "rotated-box"
-    title = "the rotated box: its AABB grows; SAT stays exact"
+    title = "the rotated box: its AABB grows, SAT is exact"
     keys_help = "Left/Right turn the bar; drag bar or probe"
     group = "narrow phase"
     draws = (Layer.SHAPES, Layer.BOUNDS, Layer.PAIRS, Layer.CONTACTS)
 
     def reset(self) -> None:
-        self.pos = {"bar": (AREA.x + 300, AREA.y + 250), "probe": (AREA.x + 330, AREA.y + 170)}
+        self.pos = {"bar": (AREA.x + 250, AREA.y + 210), "probe": (AREA.x + 280, AREA.y + 130)}
         self.angle_deg = 30.0
         self.meter = CostMeter()
         self._sampled: tuple[object, ...] = ()

@@ -33,9 +33,11 @@ import pygame
 from game.collision.aabb import Box
 from game.lab.cost import CostMeter
 
-LAB_W_PX, LAB_H_PX = 960, 540  # the lab's own screen; the window scales it
-AREA = pygame.Rect(0, 32, 620, 480)  # where scenes draw their shapes; the panel is to its right
-PANEL = pygame.Rect(628, 32, LAB_W_PX - 636, 480)  # status, costs, layers
+LAB_W_PX, LAB_H_PX = 800, 450  # the lab's own screen: 2x on 1920x1080, like the game's window
+TOP_PX = 28  # below the title line
+AREA = pygame.Rect(0, TOP_PX, 496, 392)  # where scenes draw their shapes; the panel is to its right
+PANEL = pygame.Rect(AREA.right + 6, TOP_PX, LAB_W_PX - AREA.right - 10, 394)  # status, costs,
+# parameters, layers: every row inside it, above the help line
 TICK_S = 1 / 60  # one frame of scene time
 
 Point = tuple[float, float]

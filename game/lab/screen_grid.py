@@ -20,7 +20,7 @@ from game.lab import canvas
 from game.lab.scene import AREA, Control, Layer, Scene
 
 CELL_PX = 40
-ORIGIN = (AREA.x + 320, AREA.y + 240)  # where world (0, 0) is drawn
+ORIGIN = (AREA.x + 280, AREA.y + 200)  # where world (0, 0) is drawn
 SIZE_PX = 16.0
 NUDGE_PX = 0.25
 NUDGES = {pygame.K_LEFT: (-NUDGE_PX, 0.0), pygame.K_RIGHT: (NUDGE_PX, 0.0),
@@ -29,7 +29,7 @@ NUDGES = {pygame.K_LEFT: (-NUDGE_PX, 0.0), pygame.K_RIGHT: (NUDGE_PX, 0.0),
 
 class ScreenGrid(Scene):
     name = "screen-grid"
-    title = "the screen grid: y grows downwards, floor makes the pixel"
+    title = "the screen grid: y grows down, floor makes the pixel"
     keys_help = "drag the box; arrows nudge 0.25 px"
     group = "game"
     draws = (Layer.SHAPES, Layer.BOUNDS, Layer.CELLS)

@@ -29,7 +29,7 @@ COLUMN_X = AREA.x + 290.0
 
 class SortAndSweepScene(CrowdScene):
     name = "sort-and-sweep"
-    title = "sort and sweep: only boxes overlapping on x are tested"
+    title = "sort and sweep: test only boxes that meet on x"
     keys_help = "move the mouse: sweep line; S stack into a column; drag bodies"
     group = "broad phase"
     draws = (Layer.SHAPES, Layer.BOUNDS, Layer.CONTACTS, Layer.CELLS)

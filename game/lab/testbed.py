@@ -35,9 +35,9 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import pygame
-from pygame._sdl2.video import WINDOWPOS_CENTERED, Window
+from pygame._sdl2.video import Window
 
-from game.app.window import window_scale
+from game.app.window import fit_window as fit_to_desktop
 from game.lab import canvas
 from game.lab.scene import (
     AREA,
@@ -54,16 +54,17 @@ from game.lab.scene import (
 
 COMMON_HELP = ("P pause  N step  R restart  PgUp/PgDn scene  1-5 layers  wheel zoom  "
                "right-drag pan  0 whole view  Esc list")
-MENU_TOP_PX = 70
-MENU_ROW_PX = 26
-MENU_GROUP_X, MENU_NAME_X, MENU_TITLE_X = 24, 130, 300
+MENU_TOP_PX = 50
+MENU_ROW_PX = 22
+MENU_GROUP_X, MENU_NAME_X, MENU_TITLE_X = 16, 110, 272
 ZOOMS = (1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0)  # the wheel's steps
 PAN_BUTTONS = (2, 3)  # middle and right
-GRAPH_W_PX, GRAPH_H_PX = 240, 14  # one timing's history
+GRAPH_W_PX, GRAPH_H_PX = 220, 12  # one timing's history
 BUTTON_GAP_PX = 5
 BUTTON_PAD_PX = 3
-HELP_Y = LAB_H_PX - 26
-KEY_Y = LAB_H_PX - 13
+PAUSED = "PAUSED"  # at the right of the title line while paused
+HELP_Y = LAB_H_PX - 25  # the help line, under the area and the panel
+KEY_Y = LAB_H_PX - 13  # the key to the verdict colours
 
 Action = Callable[[], None]
 
@@ -294,7 +295,7 @@ class Lab:
                 add(f"  {meter.text(label)}", canvas.TEXT)
                 rows.append(PanelRow("", pygame.Rect(PANEL.x + 16, y, GRAPH_W_PX, GRAPH_H_PX),
                                      canvas.DIM, graph=meter.history(label)))
-                y += GRAPH_H_PX + 3
+                y += GRAPH_H_PX + 2
         else:
             for line in _wrap(f"no timing: {scene.timing_note}"):
                 add(line, canvas.DIM)
@@ -311,7 +312,7 @@ class Lab:
             for key in control.keys:
                 label = key_label(key)
                 button = pygame.Rect(x, y - 1, canvas.text_width(label) + 2 * BUTTON_PAD_PX,
-                                     step - 2)
+                                     canvas.font().get_height() + 2)  # a pixel round the key
                 rows.append(PanelRow(label, button, canvas.BOUNDS, _pressing(scene, key),
                                      button=True))
                 x = button.right + BUTTON_GAP_PX
@@ -341,10 +342,10 @@ class Lab:
             self._draw_menu(surface)
             return
         scene = self.scene
-        canvas.text(surface, f"{scene.group} / {scene.name}: {scene.title}", (8, 6),
+        canvas.text(surface, title_line(scene), (8, 6),
                     canvas.TEXT, canvas.TITLE_PT)
         if self.paused:
-            canvas.text(surface, "PAUSED", (LAB_W_PX - 80, 8), canvas.TEXT, canvas.TITLE_PT)
+            canvas.text(surface, PAUSED, (paused_x(), 6), canvas.TEXT, canvas.TITLE_PT)
         self._draw_scene(surface, scene)
         for row in self.panel_rows():
             if row.graph is not None:
@@ -377,7 +378,7 @@ class Lab:
         surface.blit(pygame.transform.scale(whole.subsurface(source), AREA.size), AREA)
 
     def _draw_menu(self, surface: pygame.Surface) -> None:
-        canvas.text(surface, "Collision lab: one scene per technique, by group", (24, 20),
+        canvas.text(surface, "Collision lab: one scene per technique, by group", (16, 14),
                     canvas.TEXT, canvas.TITLE_PT)
         group = None
         for row, scene in enumerate(self.scenes):
@@ -391,7 +392,29 @@ class Lab:
             canvas.text(surface, scene.title, (MENU_TITLE_X, y + 4),
                         canvas.BOUNDS if chosen else canvas.DIM)
         canvas.text(surface, "Up/Down and Enter, or click: open a scene  |  Esc: quit",
-                    (24, HELP_Y), canvas.DIM)
+                    (16, HELP_Y), canvas.DIM)
+
+
+def menu_rows(lab: Lab) -> list[pygame.Rect]:
+    """Where each row of the list is drawn: its group, name and title, from the left of the
+    group to the end of the title."""
+    rows = []
+    for row, scene in enumerate(lab.scenes):
+        y = MENU_TOP_PX + row * MENU_ROW_PX
+        name = pygame.Rect((MENU_NAME_X, y), canvas.font(canvas.TITLE_PT).size(scene.name))
+        title = pygame.Rect((MENU_TITLE_X, y + 4), canvas.font().size(scene.title))
+        rows.append(name.union(title).union(pygame.Rect(MENU_GROUP_X, y + 4, 1, 1)))
+    return rows
+
+
+def title_line(scene: Scene) -> str:
+    """The line across the top of a scene: its group, name and what it shows."""
+    return f"{scene.group} / {scene.name}: {scene.title}"
+
+
+def paused_x() -> int:
+    """Where :data:`PAUSED` starts: right-aligned on the title line."""
+    return LAB_W_PX - 8 - canvas.text_width(PAUSED, canvas.TITLE_PT)
 
 
 def _pressing(scene: Scene, key: int) -> Action:
@@ -433,27 +456,13 @@ def _graph(surface: pygame.Surface, values: Sequence[float], rect: pygame.Rect) 
     pygame.draw.line(surface, canvas.TEXT, (rect.x + 1, level), (rect.right - 2, level))
 
 
-def window_size(desktop: tuple[int, int]) -> tuple[int, int]:
-    """The lab's window: its screen at the largest whole scale that fits the game's share
-    of the desktop (:func:`game.app.window.window_scale`).
-
-    >>> window_size((1920, 1080)), window_size((2560, 1440)), window_size((3840, 2160))
-    ((960, 540), (1920, 1080), (2880, 1620))
-    """
-    scale = window_scale(desktop, (LAB_W_PX, LAB_H_PX))
-    return LAB_W_PX * scale, LAB_H_PX * scale
-
-
 def fit_window() -> Window:
-    """Size the lab's window by :func:`window_size` for the desktop it is on and centre it
-    there, as the game does (``pygame.SCALED`` alone lets SDL pick the scale, and may fill
-    the desktop). Returns the window, which must be kept while it is open."""
+    """Size the lab's window for the desktop it is on and centre it there, by the game's own
+    rule (:func:`game.app.window.fit_window`: on 1920x1080 the lab's 800x450 screen opens at
+    2x, 1600x900, the size of the game's window). Returns the window, which must be kept
+    while it is open."""
     window = Window.from_display_module()
-    desktops = pygame.display.get_desktop_sizes()
-    index = window.display_index
-    desktop = desktops[index] if index < len(desktops) else (LAB_W_PX, LAB_H_PX)
-    window.size = window_size(desktop)
-    window.position = WINDOWPOS_CENTERED
+    fit_to_desktop(window, (LAB_W_PX, LAB_H_PX))
     return window
 
 

@@ -36,7 +36,7 @@ from game.lab.cost import CostMeter
 from game.lab.scene import AREA, TICK_S, Control, Layer, Scene
 
 LANES = ("discrete", "sub-steps", "speed clamp", "swept")
-LANE_H_PX = 112
+LANE_H_PX = 88
 BODY_PX = 20.0
 WALL_W_PX = 8.0
 WALL_X = AREA.x + 420.0

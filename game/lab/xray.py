@@ -59,8 +59,8 @@ class XRay(Scene):
                        "slime": load_frame("enemy.png", SPRITE_PX),
                        "coin": load_frame("coin.png", COIN_PX),
                        "ball": ball_image()}
-        self.pos = {"slime": (AREA.x + 80.0, AREA.y + 300.0),
-                    "coin": (AREA.x + 470.0, AREA.y + 90.0),
+        self.pos = {"slime": (AREA.x + 60.0, AREA.y + 260.0),
+                    "coin": (AREA.x + 400.0, AREA.y + 70.0),
                     "ball": (AREA.x + 300.0, AREA.y + 180.0),
                     "player": (AREA.x + 244.0, AREA.y + 128.0)}
         self.xray = True

@@ -28,6 +28,7 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 import pygame
@@ -148,7 +149,7 @@ def reach(sheet: pygame.Surface) -> None:
 
 
 def screenshots() -> None:
-    """Hop Along at ticks 60 and 90, running right with the winning script."""
+    """Hop Along at ticks 60 and 100, running right with the winning script."""
     level = LEVELS_DIR / "03-hop-along.tmx"
     script = ROOT / "tests" / "scripts" / "03-hop-along.txt"
     env = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy"}
@@ -159,10 +160,13 @@ def screenshots() -> None:
 
 
 def route() -> None:
+    """The solver's route through the first level; its script goes to a file thrown away
+    (``solve --out`` writes only regular files)."""
     env = {**os.environ, "SDL_VIDEODRIVER": "dummy"}
-    subprocess.run([sys.executable, "-m", "game.levels", "solve", str(FIRST_LEVEL), "--out",
-                    os.devnull, "--picture", str(GUIDE / "route-first-steps.png")],
-                   env=env, check=True)
+    with tempfile.TemporaryDirectory() as folder:
+        subprocess.run([sys.executable, "-m", "game.levels", "solve", str(FIRST_LEVEL),
+                        "--out", str(Path(folder) / "route.txt"),
+                        "--picture", str(GUIDE / "route-first-steps.png")], env=env, check=True)
 
 
 def main() -> None:
