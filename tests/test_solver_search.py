@@ -1,6 +1,8 @@
 """How the solver searches: the wait for a platform ends when the simulation says it comes,
-a beam keeps one state a tile while others are left, and a stuck beam goes back a few layers
-and widens instead of starting again from the spawn."""
+a beam keeps one state a tile while others are left, a stuck beam goes back a few layers
+and widens instead of starting again from the spawn, the air beside a cliff is left for the
+stairs once crowded, and a long maze of low corridors is solved by the best-first search
+with a few moves a tile."""
 
 from __future__ import annotations
 
@@ -8,12 +10,15 @@ import itertools
 from collections.abc import Iterator
 from typing import cast
 
+import pytest
+
 from game.checker.reach import DEFAULT_LIMITS
 from game.checker.solver import (
     BACK_MOVES,
     COMES_PX,
     LAST_COYOTE_TICK,
     MOVE_TICKS,
+    PLAIN_SHARE,
     UNTIL_A_PLATFORM_COMES,
     Effort,
     Node,
@@ -26,7 +31,7 @@ from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.snapshot import Snapshot
 from game.sim.world import EventKind, World
-from tests.maps import level_from_boxes
+from tests.maps import level_from_ascii, level_from_boxes
 from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, SPAWN, WIDTH, exit_on, ferry, gap
 
 
@@ -154,3 +159,69 @@ def test_a_gap_past_a_running_jump_is_crossed_by_a_jump_on_the_last_coyote_tick(
         world.step(held)
     else:
         raise AssertionError("the route never jumps off the edge")
+
+
+# One-way stairs up beside a cliff: each stair is reached by a jump from the one two tiles
+# below, zigzagging, and only the top stairs lead onto the cliff; the air beside the cliff
+# is where the reach proof's steps lead, but no jump from below climbs it.
+STAIRS_BESIDE_A_CLIFF = [
+    "                           ",
+    "                           ",
+    "         --- ---  ######  D",
+    "                  #########",
+    "     ---          #########",
+    "                  #########",
+    "         ---      #########",
+    "                  #########",
+    "     ---          #########",
+    "                  #########",
+    "P ###             #########",
+    "#####^^^^^^^^^^^^^#########",
+]
+
+
+def test_the_air_beside_a_cliff_is_left_for_the_stairs_once_it_is_crowded() -> None:
+    """Every jump from the stairs into the air beside the cliff is a state of its own, and
+    their tiles are nearer the Exit by the steps than the stair that leads on: scored by
+    the steps alone, the best-first search tried them until the budget ran out."""
+    level = level_from_ascii(STAIRS_BESIDE_A_CLIFF)
+    solution = solve(level)
+    assert solution.found and solution.own_budget, solution.moves_tried
+    assert solution.moves_tried < solution.budget * PLAIN_SHARE
+
+
+MAZE_CORRIDORS = 20  # corridors two tiles high, each run from one end to the other
+MAZE_WIDTH = 64  # tiles across, the walls at both ends included
+MOVES_PER_CORRIDOR_TILE = 14  # about 6 moves for each state carried on from, 2 states a tile
+
+
+def serpentine_maze() -> Level:
+    """Corridors two tiles high, one under the other; a hole at the far end of each floor
+    drops into the next, which runs back the other way; the Exit is at the end of the last."""
+    wall = "#" * MAZE_WIDTH
+    inside = "#" + " " * (MAZE_WIDTH - 2) + "#"
+    rows = [wall]
+    for corridor in range(MAZE_CORRIDORS):
+        rows += [inside, inside]
+        hole = MAZE_WIDTH - 3 if corridor % 2 == 0 else 1  # two tiles at the far end
+        rows.append(wall[:hole] + "  " + wall[hole + 2:])
+    rows[-1] = wall
+    rows[1] = "#P" + inside[2:]
+    exit_col = 2 if MAZE_CORRIDORS % 2 == 0 else MAZE_WIDTH - 3
+    rows[-2] = inside[:exit_col] + "D" + inside[exit_col + 1:]
+    return level_from_ascii(rows)
+
+
+@pytest.mark.slow
+def test_a_long_maze_of_low_corridors_is_solved_with_a_few_moves_a_tile() -> None:
+    """A route of thousands of ticks: in a corridor two tiles high every jump meets the
+    ceiling and ends in the tile a run ends in, so a score by tiles alone ties them all and
+    the best-first search carries on from each; counting the place within the tile, it
+    carries on from the run that got furthest, and it may spend half the moves of a budget
+    this large before the beams take over."""
+    level = serpentine_maze()
+    solution = solve(level)
+    assert solution.found and solution.own_budget
+    assert solution.exit_tick > 10_000
+    tiles = MAZE_CORRIDORS * (MAZE_WIDTH - 2)
+    assert solution.moves_tried <= MOVES_PER_CORRIDOR_TILE * tiles, solution.moves_tried

@@ -62,9 +62,16 @@ What it teaches: a **beam search** over a deterministic simulation.
   into it.
 * **Best first, then beams.** First a best-first search always carries on from the state
   with the best score (counting time a little); it is quick where no waiting is needed.
-  If it has not found a route after :attr:`Effort.greedy_moves` moves, beams take over. On
-  a level with moving platforms the beams go first: waiting for a platform never improves
-  the score, so a best-first search would never wait.
+  Its score also counts where the feet are within their tile, leaning towards the
+  neighbouring tiles' steps (:meth:`_Search.within_tile`), so a run that got further along
+  a corridor goes first, not every state that stands in the same tile; and each state
+  already kept in a tile puts the next one there :data:`CROWD_TILES` further back, so a
+  place where the steps promise more than the game gives (the air beside a wall the steps
+  climb, which only a jump from elsewhere clears) is left once it is crowded, for the
+  tiles not yet tried. If it has not found a route after :attr:`Effort.greedy_moves`
+  moves, or :data:`GREEDY_SHARE` of the stage's moves where that is more (a long maze),
+  beams take over. On a level with moving platforms the beams go first: waiting for a
+  platform never improves the score, so a best-first search would never wait.
 * **Widening where stuck.** A narrow beam is fast but can throw away the one state that
   needed to wait. When a beam dies out, or gets no closer for a while, the search goes back
   :data:`BACK_MOVES` layers and carries on from there twice as wide (going back twice as
@@ -138,6 +145,9 @@ HISTORY_LAYERS = 400  # ... but no further back than this (or else to the spawn)
 PER_CELL = 1  # a beam keeps at most this many states in one tile while others are left
 UNREACHABLE = math.inf
 BEST_FIRST_WEIGHT = 3.0  # how much more a tile of distance counts than a tile's worth of time
+CROWD_TILES = 0.2  # best first: each state kept in a tile puts the next there this many tiles
+#                    further back
+GREEDY_SHARE = 0.5  # of a stage's moves, the best-first search may try at least this share
 FEET_PX = 0.5  # the search scores the cell just above the middle of the feet
 PLAIN_SHARE = 0.6  # of a map's budget, what the plain moves may spend before timed inputs
 EARLY_TICKS = 16  # an edge's jumps are pressed from this many ticks before the run leaves it
@@ -182,7 +192,8 @@ class Effort:
     budget: int | None = None  # moves the whole search may try (None: the map's own budget,
     #                            :func:`game.checker.search_budget.map_budget`)
     greedy_moves: int = 14_000  # of those, the most the best-first search may try first
-    width: int = 3  # the beam's width where it is not stuck
+    #                             (or GREEDY_SHARE of the stage's moves, where that is more)
+    width: int = 2  # the beam's width where it is not stuck
     seconds: float | None = None  # an extra wall-clock limit (None: none, the default)
 
 
@@ -389,8 +400,9 @@ class _Search:
         # drops a timed jump while it is over a pit, as it drops every fall)
         if not self.world.platforms or self.timed:
             share = self.limit - self.moves_tried
+            greedy = max(self.effort.greedy_moves, math.floor(share * GREEDY_SHARE))
             found = self.best_first(self.moves_tried + min(
-                self.effort.greedy_moves, share // 2 if self.world.platforms else share))
+                greedy, share // 2 if self.world.platforms else share))
             if found is not None or self.out_of_time():
                 return found
         return self.beams()
@@ -781,10 +793,13 @@ class _Search:
 
     def best_first(self, max_moves: int) -> Node | None:
         """Always carry on from the state closest to an Exit, counting time a little
-        (weighted A*): quick on levels that need no waiting."""
+        (weighted A*): quick on levels that need no waiting. Closest counts the place
+        within the tile (:meth:`within_tile`) and the states kept in the tile before
+        (:data:`CROWD_TILES` each)."""
         grid, tuning = self.level.grid, self.world.tuning
         tiles_per_tick = tuning.run_speed_px_s * tuning.tick_s / grid.tile_w
         seen: dict[StateKey, int] = {}
+        crowd: dict[tuple[int, int], int] = {}  # the states kept in each tile
         queue: list[tuple[float, int, Snapshot, Node | None]] = [(0.0, 0, self.start, None)]
         order = 0
         while queue and self.moves_tried < max_moves:
@@ -795,7 +810,11 @@ class _Search:
                 if score == -math.inf:
                     return child
                 order += 1
-                priority = score + child.ticks * tiles_per_tick / BEST_FIRST_WEIGHT
+                cell = self.cell()  # (the world is in the child's state)
+                kept = crowd.get(cell, 0)
+                crowd[cell] = kept + 1
+                priority = (score + self.within_tile() + kept * CROWD_TILES
+                            + child.ticks * tiles_per_tick / BEST_FIRST_WEIGHT)
                 heapq.heappush(queue, (priority, order, child_state, child))
             if self.out_of_time():
                 return None
@@ -857,6 +876,25 @@ class _Search:
                           if layer <= started_at}
             closest, since_closer, dropped = UNREACHABLE, 0, False
         return None
+
+    def within_tile(self) -> float:
+        """How much nearer an Exit (negative) or further (positive) than their tile's steps
+        the feet are, at most half a step each way along each axis: from the middle of the
+        tile, the steps lean towards those of the neighbouring tile the feet are nearer
+        (a step at most, however far that tile's own way is)."""
+        grid, box = self.level.grid, self.world.player.box
+        x, y = box.center[0] / grid.tile_w, (box.bottom - FEET_PX) / grid.tile_h
+        col, row = math.floor(x), math.floor(y)
+        here = self.steps.get((col, row))
+        if here is None:
+            return 0.0
+        lean = 0.0
+        for off, near in ((x - col - 0.5, (col + (1 if x - col > 0.5 else -1), row)),
+                          (y - row - 0.5, (col, row + (1 if y - row > 0.5 else -1)))):
+            there = self.steps.get(near)
+            if there is not None:
+                lean += abs(off) * max(-1, min(1, there - here))
+        return lean
 
     def cell(self) -> tuple[int, int]:
         """The tile the middle of the player's feet is in."""
