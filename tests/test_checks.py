@@ -4,7 +4,12 @@ as strictly as the game, and as the oldest Python the package says it supports."
 from __future__ import annotations
 
 import re
+import sys
 from pathlib import Path
+
+import hypothesis  # noqa: F401  # loaded here whichever test file runs first
+import pytest
+from _pytest.assertion.rewrite import AssertionRewritingHook
 
 ROOT = Path(__file__).resolve().parent.parent
 README = (ROOT / "README.md").read_text(encoding="utf-8")
@@ -36,3 +41,12 @@ def test_mypy_checks_the_oldest_python_the_package_supports() -> None:
     oldest = re.fullmatch(r">=\s*(\d+\.\d+)", requires)
     assert oldest is not None, f"requires-python {requires!r} does not name an oldest version"
     assert setting("python_version") == oldest.group(1)
+
+
+def test_the_test_run_loads_hypothesis_without_rewriting_its_asserts(
+        pytestconfig: pytest.Config) -> None:
+    """The plugin is named in pyproject.toml, not discovered: a discovered plugin's whole
+    package has its asserts rewritten at every start, where no bytecode is cached."""
+    assert pytestconfig.pluginmanager.has_plugin("_hypothesis_pytestplugin")
+    loader = sys.modules["hypothesis"].__spec__.loader  # type: ignore[union-attr]
+    assert not isinstance(loader, AssertionRewritingHook)

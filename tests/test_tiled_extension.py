@@ -79,11 +79,14 @@ for (const step of steps) {
         action();
     } else if ("save" in step) {  // the designer edits the map and saves it
         fs.writeFileSync(step.save, step.text, "utf8");
-    } else {  // double-click the entry at this index in the Issues panel
+    } else {  // double-click the entry at this index (or the first with this text) in the panel
+        const index = "activate" in step ? step.activate
+            : issues.findIndex(([, text]) => text.includes(step.activate_text));
+        if (index < 0) throw new Error(`no entry in the Issues panel says ${step.activate_text}`);
         const map = tiled.activeAsset;
         map.selectedObjects = []; map.area = null;
         const logged = logs.length;
-        callbacks[step.activate]();
+        callbacks[index]();
         selections.push({ objects: map.selectedObjects.map((o) => o.id), area: map.area,
                           logs: logs.slice(logged) });
     }
@@ -97,7 +100,8 @@ def run_extension(tmp_path: Path, map_file: Path, programs: dict[str, str],
     """Press Map > Check Tile Hopper Map with ``map_file`` open (or take ``steps``: open a map
     and check it, ``{"check": PATH, "objects": [IDS]}``, save a map with new text,
     ``{"save": PATH, "text": TEXT}``, or double-click the Issues panel's entry at an index,
-    ``{"activate": N}``); what the extension ran, what it put in the
+    ``{"activate": N}``, or the first entry whose text holds TEXT, ``{"activate_text":
+    TEXT}``); what the extension ran, what it put in the
     Issues panel (and how many times each entry was reported) and the Console, and what
     each double-click selected."""
     harness = tmp_path / "tiled-stand-in.js"
@@ -210,11 +214,9 @@ BURIED_FLAG = '<object id="9" name="flag" type="Checkpoint" x="96" y="40" width=
 def test_a_checkpoint_finding_selects_the_flag_not_a_tile(tmp_path: Path) -> None:
     map_file = write_tmx(tmp_path, CAVE, extra_objects=BURIED_FLAG)
     answer = run_extension(tmp_path, map_file, {"python3": sys.executable},
-                           [{"check": str(map_file), "objects": [1, 2, 9]}])
-    (index,) = [n for n, (_, text) in enumerate(answer["issues"]) if "Checkpoint" in text]
-    answer = run_extension(tmp_path, map_file, {"python3": sys.executable},
                            [{"check": str(map_file), "objects": [1, 2, 9]},
-                            {"activate": index}])
+                            {"activate_text": "Checkpoint"}])
+    assert len([text for _, text in answer["issues"] if "Checkpoint" in text]) == 1
     assert answer["selections"] == [{"objects": [9], "area": None, "logs": []}]
 
 
@@ -226,17 +228,16 @@ def test_each_check_is_told_apart_and_a_finding_it_did_not_make_again_selects_no
     map_file = write_tmx(tmp_path, CAVE, extra_objects=BURIED_FLAG + '<object id="8" '
                          'type="Checkpoint" x="160" y="40" width="16" height="16"/>')
     check = {"check": str(map_file), "objects": [1, 2, 8, 9]}
-    answer = run_extension(tmp_path, map_file, {"python3": sys.executable}, [check])
-    texts = [text for _, text in answer["issues"]]
-    first = next(n for n, text in enumerate(texts) if "object #9 'flag'" in text)
-    second = next(n for n, text in enumerate(texts) if "object #8 ''" in text)
     fixed = map_file.read_text(encoding="utf-8").replace(
         'id="8" type="Checkpoint" x="160" y="40"', 'id="8" type="Checkpoint" x="160" y="16"')
     other = write_tmx(tmp_path, CAVE, name="other.tmx")
+    flag_9, flag_8 = "object #9 'flag'", "object #8 ''"
     answer = run_extension(tmp_path, map_file, {"python3": sys.executable}, [
         check, {"check": str(other), "objects": [1, 2]},
         {"save": str(map_file), "text": fixed}, check,  # flag #8 now stands on the ground
-        {"activate": first}, {"activate": second}])
+        {"activate_text": flag_9}, {"activate_text": flag_8}])  # as the first check found them
+    texts = [text for _, text in answer["issues"]]  # entries are only ever added, in order
+    first = next(n for n, text in enumerate(texts) if flag_9 in text)
     separators = [line for line in answer["logs"] if line.startswith("==== Tile Hopper check")]
     assert separators == [f"==== Tile Hopper check {n}: {path} ==== (the Issues panel keeps "
                           "the findings of earlier checks until you press its Clear button)"

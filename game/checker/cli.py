@@ -32,8 +32,8 @@ ticks of play: :data:`game.checker.reach.MAX_MEASURE_TICKS`).
 :mod:`game.levels.classes` (exit 1 if not); ``types --write`` regenerates them.
 
 >>> from game.levels import LEVELS_DIR
->>> check([LEVELS_DIR], Options(solve=False))  # doctest: +ELLIPSIS
-checked ... map(s): all playable; with the default physics the player jumps 2.8 tiles high ...
+>>> check([LEVELS_DIR / "01-first-steps.tmx"], Options(solve=False))  # doctest: +ELLIPSIS
+checked 1 map(s): all playable; the player jumps 2.8 tiles high and 3.6 tiles across ...
 0
 """
 
