@@ -80,7 +80,7 @@ SHOTS_TO_TAKE = (
     Shot("first-steps", "levels/01-first-steps.tmx", 400, debug=False),
     Shot("debug-overlay", "levels/01-first-steps.tmx", 212, debug=True),
     Shot("debug-stomp", "levels/01-first-steps.tmx", 335, debug=True),
-    Shot("moving-parts", "levels/04-moving-parts.tmx", 1092, debug=True),
+    Shot("moving-parts", "levels/04-moving-parts.tmx", 579, debug=True),
     Shot("debug-fast-fall", "levels/showcase/fast-fall.tmx", 1, debug=True, scripted=False),
 )
 
