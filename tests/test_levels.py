@@ -148,6 +148,26 @@ def test_a_long_level_has_a_checkpoint_and_every_level_a_target_time_above_its_s
     assert seconds <= target <= seconds * TARGET_SLACK + 1
 
 
+GUIDE = LEVELS_DIR / "README.md"
+
+
+def test_the_guides_table_and_total_are_the_scripts_and_the_maps_targets() -> None:
+    """The designer's guide gives each level's script time and target, and the total: each
+    is what the script's comment says and the map's ``target_seconds`` hold."""
+    guide = GUIDE.read_text(encoding="utf-8")
+    rows = re.findall(r"^\| \d+ \| [^|]*\(`([\w-]+)\.tmx`\) \|.*\| ([\d.]+) s \| ([\d.]+) s \|$",
+                      guide, re.MULTILINE)
+    assert [stem for stem, _, _ in rows] == [path.stem for path in SHIPPED]
+    ticks = {path.stem: exit_tick_said(SCRIPTS / f"{path.stem}.txt") for path in SHIPPED}
+    for stem, script_s, target_s in rows:
+        assert abs(float(script_s) - ticks[stem] / 60) <= 0.05, stem  # to a tenth of a second
+        target = load_level(LEVELS_DIR / f"{stem}.tmx").properties.get("target_seconds")
+        assert float(target_s) == target, stem
+    total = sum(ticks.values())
+    assert f"Together the scripts take {total:,} ticks ({total / 3600:.1f} minutes)" in " ".join(
+        guide.split())
+
+
 @pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
 def test_every_moving_platform_travels_within_one_view(level: Path) -> None:
     """Its whole box, from one end of its route to the other, fits in the 320 x 180 view, so
