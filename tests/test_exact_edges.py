@@ -13,11 +13,12 @@ import pytest
 
 from game.checker.checking import Options, check_map
 from game.checker.jump_envelope import air_envelope, exact_reach
-from game.checker.mechanic_bounds import patrol_span
+from game.checker.mechanic_bounds import patrol_span, touch_px
 from game.checker.reach import DEFAULT_LIMITS, Limits, limits_of
 from game.checker.solver import Effort
 from game.checker.verdict import Kind, judge, prove_impossible
 from game.collision.aabb import Box
+from game.sim.inputs import Action
 from game.sim.level import EnemySpec, Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.tuning import Tuning
@@ -386,3 +387,31 @@ def test_a_ceiling_near_the_take_off_does_not_move_the_edge() -> None:
                              Box(EDGE + width, FLOOR, WIDTH - EDGE - width, 64)],
                 SPAWN, [exit_on(FLOOR)])
             assert proven_impossible(level) is impossible
+
+
+def test_a_lift_is_named_just_within_touching_distance_of_the_highest_head_not_beyond(
+        ) -> None:
+    """Touching distance is the corner slide and 2 px more (:func:`touch_px`: the 1 px probe
+    under the feet, and rounding): a lift over
+    the start whose underside is that far over the highest the head gets in the game, less
+    half a pixel, is named; half a pixel further up, it is left out and the proof stands."""
+    world = World(gap_and(DEFAULT_LIMITS.coyote_gap_px + 1))
+    highest_head = world.player.box.y
+    for _ in range(120):  # a jump held from the spawn, to its top and down again
+        world.step(frozenset({Action.JUMP}))
+        highest_head = min(highest_head, world.player.box.y)
+    margin = world.tuning.corner_correction_px + 2.0
+    assert touch_px(world) == margin
+
+    def lift_with_underside_at(y: float) -> PlatformSpec:  # a short lift, up and down
+        return PlatformSpec(Route(((SPAWN.x - 8, y - 18.0), (SPAWN.x - 8, y - 8.0))),
+                            32.0, 8.0, 10.0)
+
+    def named(y: float) -> bool:
+        level = gap_and(DEFAULT_LIMITS.coyote_gap_px + 1, platforms=(lift_with_underside_at(y),))
+        return bool(exact_reach(World(level)).unbounded)
+
+    assert named(highest_head - margin + 0.5)
+    assert not named(highest_head - margin - 0.5)
+    assert proven_impossible(gap_and(DEFAULT_LIMITS.coyote_gap_px + 1, platforms=(
+        lift_with_underside_at(highest_head - margin - 0.5),)))
