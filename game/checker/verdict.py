@@ -35,6 +35,7 @@ from dataclasses import dataclass, replace
 from enum import Enum
 from pathlib import Path
 
+from game.checker.enemy_barrier import Barrier, blocks_the_way
 from game.checker.jump_envelope import Exact, exact_reach, nearest_reached
 from game.checker.reachable import Cell, Reach, open_path, reachable
 from game.checker.solver import Effort, Solution, solve
@@ -111,6 +112,10 @@ def _prove(level: Level) -> tuple[Verdict | None, Reach | None, list[str]]:
         culprit = _closing_layer(world, lambda w: not exact_reach(w).touches_exit)
         found = _out_of_reach(nearest_reached(exact, level), culprit, reach, exact)
         return found, reach, []
+    for number in range(len(level.enemies)):
+        barrier = blocks_the_way(world, number)
+        if barrier is not None:
+            return _blocked(barrier, reach), reach, []
     return None, reach, exact.unbounded
 
 
@@ -138,6 +143,20 @@ def _out_of_reach(tile: Cell | None, culprit: tuple[str, Cell] | None, reach: Re
                    f"touch{bounds}; this is the nearest place they reach",
                    "lower the ledges or narrow the gaps on the way (see the player's "
                    "reach in the summary), or move the Exit", reach=reach)
+
+
+def _blocked(barrier: Barrier, reach: Reach | None) -> Verdict:
+    """The IMPOSSIBLE verdict of an enemy that blocks the only way
+    (:mod:`game.checker.enemy_barrier`)."""
+    col, row = barrier.tile
+    return Verdict(Kind.IMPOSSIBLE, barrier.tile,
+                   f"impossible: the enemy at tile ({col},{row}) blocks the only way to the "
+                   "Exit, in a passage too low to jump over it or stomp it, and no place "
+                   "the player comes back to after losing a life is near enough to pass it "
+                   f"while protected (for {barrier.protected_ticks} ticks, at most "
+                   f"{math.ceil(barrier.protected_px)} px at a run); this is the enemy",
+                   "raise the passage's ceiling over the enemy, open another way round it, "
+                   "or put a Checkpoint near enough to it", reach=reach)
 
 
 def _closing_layer(world: World, proves: Callable[[World], bool],
