@@ -154,7 +154,9 @@ def test_a_checkpoint_near_enough_to_the_walker_gives_a_respawn_that_passes_it()
 
 def test_a_crusher_that_can_crush_the_walker_opens_the_way() -> None:
     """A crusher coming down a shaft through the ceiling onto the walker's floor crushes the
-    walker, and the player walks through: not proven, and won with no life lost."""
+    walker, and the player walks through: not proven, and won with no life lost (without
+    the shaft and its crusher, proven)."""
+    assert proven(passage())
     crushed = passage(slot=True)
     assert not proven(crushed)
     assert play(crushed, right_from(0)) == (True, 0, 0)

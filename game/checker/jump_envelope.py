@@ -44,7 +44,8 @@ own :meth:`~game.sim.world.World.step`, then let walls only ever help the proof'
   player can be, and the proof stands. Each one the envelope comes near, each enemy with
   no bound, and a counted Checkpoint whose respawn place a platform's route could move,
   makes it prove nothing and is named (:attr:`Exact.unbounded`); the cell fill of
-  :mod:`game.checker.reachable`, which follows stomps and rides, may still prove the map.
+  :mod:`game.checker.reachable`, which follows stomps and rides, may still prove the map,
+  and so may :mod:`game.checker.enemy_barrier`, for a walker that blocks the only way.
 
 Heights get :data:`SLACK_PX` more than measured (the game's float sums at another height
 may round apart by far less); sideways moves are the game's own float sums, so the widest

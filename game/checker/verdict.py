@@ -21,7 +21,10 @@ What it teaches: keep what was *proven* apart from what was merely *not found*.
   or the platform by the tile it starts at). Where one tile layer's Solid tiles
   close the way (taking them away opens it, to the same proof; for the pixel-exact reach,
   an Exit then comes in reach: a layer that only walls an enemy in is not named), the line
-  names the layer and points at one of its tiles.
+  names the layer and points at one of its tiles. Last, an enemy the reaches leave
+  unbounded may still be proven to block the only way (:mod:`game.checker.enemy_barrier`:
+  a walker in a passage too low to get over it, with no respawn place near enough to
+  pass it while protected after a lost life); the line names it by its tile.
 * **Not decided**: the search spent its budget (or its seconds) without a route, and
   nothing proved the map impossible. That is said as such, with the bound, the work done,
   the furthest place reached and how to search further; it never reads as solved.
