@@ -37,15 +37,17 @@ MOUTH = 160  # where the passage's ceiling begins
 LOW_CEILING = 144  # the passage's ceiling: one tile over the floor
 SLOT = 224  # a shaft through the ceiling, over the walker's floor, for a crusher
 FIRST_SPAWN_OUT_OF_REACH = 71  # the furthest right a spawn is proven out of reach
+MIRRORED_WAIT = 160  # mirrored, from x = 75: the tick the winning run sets off
 RIGHT, JUMP = Action.RIGHT, Action.JUMP
 Script = Callable[[int], Actions]
 
 
 def passage(spawn_x: float = 32.0, ceiling: float = LOW_CEILING, flag_x: float | None = None,
-            slot: bool = False) -> Level:
+            slot: bool = False, mirrored: bool = False) -> Level:
     """The passage map: the spawn at ``spawn_x``, the ceiling's underside at ``ceiling``, a
     Checkpoint at ``flag_x`` (if any), and (``slot``) a shaft through the ceiling over the
-    walker's floor with a crusher (a Platform a tile square) going up and down in it."""
+    walker's floor with a crusher (a Platform a tile square) going up and down in it;
+    ``mirrored``: all of it mirrored left to right (the spawn on the right)."""
     left, right = RUN
     solids = [Box(0, FLOOR, left - 8, 64), Box(left - 8, FLOOR + 16, 8, 48),
               Box(left, FLOOR, right - left, 64), Box(right, FLOOR + 16, 8, 48),
@@ -56,11 +58,19 @@ def passage(spawn_x: float = 32.0, ceiling: float = LOW_CEILING, flag_x: float |
     else:
         solids.append(Box(MOUTH, 0, WIDTH - MOUTH, ceiling))
     crusher = PlatformSpec(Route(((SLOT, 64.0), (SLOT, FLOOR - 20.0))), TILE, TILE, 40.0)
-    flags = (Box(flag_x, FLOOR - 32, 16, 32),) if flag_x is not None else ()
-    return level_from_boxes(COLS, ROWS, solids, Box(spawn_x, FLOOR - 14, 12, 14),
-                            [Box(WIDTH - 48, FLOOR - 16, 16, 16)], checkpoints=flags,
+    flags = [Box(flag_x, FLOOR - 32, 16, 32)] if flag_x is not None else []
+    spawn, goal, walker = (Box(spawn_x, FLOOR - 14, 12, 14), Box(WIDTH - 48, FLOOR - 16, 16, 16),
+                           Box(216.0, FLOOR - 12, 14, 12))
+
+    def flip(box: Box) -> Box:
+        return Box(WIDTH - box.right, box.y, box.w, box.h) if mirrored else box
+    if mirrored:
+        crusher = PlatformSpec(Route(tuple((WIDTH - x - TILE, y)
+                                           for x, y in crusher.path.points)), TILE, TILE, 40.0)
+    return level_from_boxes(COLS, ROWS, [flip(b) for b in solids], flip(spawn), [flip(goal)],
+                            checkpoints=tuple(flip(b) for b in flags),
                             platforms=(crusher,) if slot else (),
-                            enemies=(EnemySpec(Box(216.0, FLOOR - 12, 14, 12)),))
+                            enemies=(EnemySpec(flip(walker)),))
 
 
 def right_from(first: int, jumps: tuple[int, int] | None = None) -> Script:
@@ -71,6 +81,11 @@ def right_from(first: int, jumps: tuple[int, int] | None = None) -> Script:
             keys.add(JUMP)
         return frozenset(keys)
     return held
+
+
+def left_from(first: int) -> Script:
+    """Hold left from tick ``first`` on."""
+    return lambda tick: frozenset({Action.LEFT}) if tick >= first else frozenset()
 
 
 def play(level: Level, script: Script, ticks: int = 1_200) -> tuple[bool, int, int]:
@@ -124,6 +139,15 @@ def test_a_spawn_near_enough_for_the_protection_to_carry_the_player_past_is_not_
     near = passage(spawn_x=75)
     assert not proven(near)
     assert play(near, right_from(56)) == (True, 1, 0)
+
+
+def test_the_same_edge_holds_mirrored() -> None:
+    """Mirrored left to right (the spawn on the right, the walker first walking towards
+    it), a spawn as far from the walker's floor is proven out of reach, one pixel nearer
+    is not, and the twin won from x = 75 is won mirrored too."""
+    assert proven(passage(spawn_x=FIRST_SPAWN_OUT_OF_REACH, mirrored=True))
+    assert not proven(passage(spawn_x=FIRST_SPAWN_OUT_OF_REACH + 1, mirrored=True))
+    assert play(passage(spawn_x=75, mirrored=True), left_from(MIRRORED_WAIT)) == (True, 1, 0)
 
 
 def test_a_passage_a_pixel_taller_lets_the_player_stomp_the_walker() -> None:

@@ -54,7 +54,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from game.checker.jump_envelope import SLACK_PX, Surface, ceilings
+from game.checker.jump_envelope import SLACK_PX, ceilings
 from game.checker.mechanic_bounds import patrol_span, touch_px
 from game.checker.reachable import SLACK_PX as FEET_SLACK_PX
 from game.checker.reachable import Cell, open_path, starts, target_cells
@@ -128,8 +128,8 @@ def blocks_the_way(world: World, number: int) -> Barrier | None:
     tick_px = step + tuning.corner_correction_px  # and a corner correction's slide
     spec = level.enemies[number]
     speed = tuning.enemy_speed_px_s if spec.speed_px_s is None else spec.speed_px_s
-    if not tick_px + abs(speed) * tuning.tick_s < pw + ew:
-        return None  # a tick could carry the player from one side of it to the other
+    if not (tick_px + abs(speed) * tuning.tick_s < pw + ew and tick_px < tw):
+        return None  # a tick could carry the player from one side of it (or a column) past
     first = math.floor((low + ew + pw / 2 - tick_px) / tw)
     last = max(first, math.floor((high - ew - pw / 2 + tick_px) / tw))
     covered = range(min(first, math.floor((low - tick_px) / tw)),
@@ -163,54 +163,71 @@ def blocks_the_way(world: World, number: int) -> Barrier | None:
     right_side = any((last + 1, row) in reach.cells for row in gate_rows)
     if left_side == right_side:
         return None
-    ticks, runs = tuning.invulnerable_ticks, ceilings(grid)
     run = protected_run_px(tuning)
+    shortcuts = _shortcuts(world, pw)
     for start in counted:
         box = start.box
         if _feet_cell(grid, box) in gate:
             return None
         if left_side:
-            furthest = _furthest_right(runs, box.x, run, tuning.corner_correction_px)
+            furthest = _furthest(box.x, run, shortcuts.rightwards)
             if not (furthest < low + ew and furthest + pw / 2 < (last + 1) * tw):
                 return None
         else:
-            furthest = _furthest_left(runs, box.x, pw, run, tuning.corner_correction_px)
+            furthest = -_furthest(-box.x, run, shortcuts.leftwards)
             if not (furthest + pw > high - ew and furthest + pw / 2 >= first * tw):
                 return None
     tile = (math.floor(enemy.x / tw), math.floor(enemy.y / th))
-    return Barrier(tile, ticks, run)
+    return Barrier(tile, tuning.invulnerable_ticks, run)
 
 
 def protected_run_px(tuning: Tuning) -> float:
     """The farthest a player runs (with :data:`SLACK_PX` a tick to spare) in the ticks it is
     protected after losing a life: it comes back standing still, and each tick its speed
-    grows by at most the faster of the ground's and the air's rates, up to the run speed."""
-    rate = max(run_change_px_s(tuning, True, True), run_change_px_s(tuning, False, True))
+    changes by at most the fastest of the tuning's rates (speeding up or stopping, on the
+    ground or in the air), up to the run speed."""
+    rate = max(run_change_px_s(tuning, ground, speeding) for ground in (True, False)
+               for speeding in (True, False))
     top = tuning.run_speed_px_s
     return sum(min(top, tick * rate) * tuning.tick_s + SLACK_PX
                for tick in range(1, tuning.invulnerable_ticks + 1))
 
 
-def _furthest_right(runs: list[Surface], x: float, run: float, corner_px: float) -> float:
-    """The furthest right the left edge of a box at ``x`` can be while it runs ``run`` px,
-    with any corner correction's slide, which leaves the box flush with the right end of a
-    run of ceiling bottoms (:func:`~game.checker.jump_envelope.ceilings`) it was within
-    ``corner_px`` of, from where it runs on."""
+@dataclass(frozen=True)
+class _Shortcuts:
+    """Where a box's left edge may be put beyond its own run, each as (the least it must
+    have reached, where it is put): rightwards, and leftwards with x read as -x."""
+
+    rightwards: list[tuple[float, float]]
+    leftwards: list[tuple[float, float]]
+
+
+def _shortcuts(world: World, width: float) -> _Shortcuts:
+    """A corner correction's slide leaves the box flush with an end of a run of ceiling
+    bottoms (:func:`~game.checker.jump_envelope.ceilings`) it was within
+    ``corner_correction_px`` of; a moving Platform carries or pushes it anywhere along the
+    box its route spans (touching it there, within touching distance)."""
+    corner, grow = world.tuning.corner_correction_px + SLACK_PX, touch_px(world)
+    right, left = [], []
+    for run in ceilings(world.level.grid):
+        right.append((run.right - corner, run.right))
+        left.append((-(run.left + corner - width), -(run.left - width)))
+    for platform in world.level.platforms:
+        region = route_region(platform)
+        right.append((region.left - grow - width, region.right + grow))
+        left.append((-(region.right + grow), -(region.left - grow - width)))
+    return _Shortcuts(sorted(right), sorted(left))
+
+
+def _furthest(x: float, run: float, shortcuts: list[tuple[float, float]]) -> float:
+    """The furthest right a box's left edge at ``x`` can be while it runs ``run`` px, where
+    each shortcut it reaches may put it further, from where it runs on (``shortcuts``
+    sorted by the least each needs reached)."""
     furthest = x + run
-    for ceiling in sorted(runs, key=lambda r: r.right):
-        if ceiling.right - corner_px - SLACK_PX <= furthest:
-            furthest = max(furthest, ceiling.right + run)
-    return furthest
-
-
-def _furthest_left(runs: list[Surface], x: float, width: float, run: float,
-                   corner_px: float) -> float:
-    """:func:`_furthest_right` to the left: a slide leaves the box's right edge flush with
-    a run's left end."""
-    furthest = x - run
-    for ceiling in sorted(runs, key=lambda r: r.left, reverse=True):
-        if ceiling.left + corner_px + SLACK_PX >= furthest + width:
-            furthest = min(furthest, ceiling.left - width - run)
+    for needs, put in shortcuts:
+        if needs > furthest:
+            break
+        furthest = max(furthest, put + run)
     return furthest
 
 
