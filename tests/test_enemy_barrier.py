@@ -18,7 +18,10 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 
-from game.checker.enemy_barrier import protected_run_px
+import pytest
+
+from game.checker.enemy_barrier import MAX_FLOODS, protected_run_px
+from game.checker.reachable import Reach, open_path
 from game.checker.solver import Effort
 from game.checker.verdict import Kind, judge, prove_impossible
 from game.collision.aabb import Box
@@ -35,6 +38,7 @@ WIDTH, FLOOR = COLS * TILE, 10 * TILE  # the floor's top
 RUN = (192, 256)  # the walker's floor, between two notches
 MOUTH = 160  # where the passage's ceiling begins
 LOW_CEILING = 144  # the passage's ceiling: one tile over the floor
+HOLE = 480  # a hole in the ceiling far beyond the walker
 SLOT = 224  # a shaft through the ceiling, over the walker's floor, for a crusher
 FIRST_SPAWN_OUT_OF_REACH = 71  # the furthest right a spawn is proven out of reach
 MIRRORED_WAIT = 160  # mirrored, from x = 75: the tick the winning run sets off
@@ -43,11 +47,12 @@ Script = Callable[[int], Actions]
 
 
 def passage(spawn_x: float = 32.0, ceiling: float = LOW_CEILING, flag_x: float | None = None,
-            slot: bool = False, mirrored: bool = False) -> Level:
+            slot: bool = False, mirrored: bool = False, hole: bool = False) -> Level:
     """The passage map: the spawn at ``spawn_x``, the ceiling's underside at ``ceiling``, a
     Checkpoint at ``flag_x`` (if any), and (``slot``) a shaft through the ceiling over the
     walker's floor with a crusher (a Platform a tile square) going up and down in it;
-    ``mirrored``: all of it mirrored left to right (the spawn on the right)."""
+    ``mirrored``: all of it mirrored left to right (the spawn on the right); ``hole``: a
+    hole in the ceiling at x = 480, far beyond the walker, a way round it."""
     left, right = RUN
     solids = [Box(0, FLOOR, left - 8, 64), Box(left - 8, FLOOR + 16, 8, 48),
               Box(left, FLOOR, right - left, 64), Box(right, FLOOR + 16, 8, 48),
@@ -55,6 +60,9 @@ def passage(spawn_x: float = 32.0, ceiling: float = LOW_CEILING, flag_x: float |
     if slot:
         solids += [Box(MOUTH, 0, SLOT - MOUTH, ceiling),
                    Box(SLOT + TILE, 0, WIDTH - SLOT - TILE, ceiling)]
+    elif hole:
+        solids += [Box(MOUTH, 0, HOLE - MOUTH, ceiling),
+                   Box(HOLE + TILE, 0, WIDTH - HOLE - TILE, ceiling)]
     else:
         solids.append(Box(MOUTH, 0, WIDTH - MOUTH, ceiling))
     crusher = PlatformSpec(Route(((SLOT, 64.0), (SLOT, FLOOR - 20.0))), TILE, TILE, 40.0)
@@ -184,6 +192,36 @@ def test_a_crusher_that_can_crush_the_walker_opens_the_way() -> None:
     crushed = passage(slot=True)
     assert not proven(crushed)
     assert play(crushed, right_from(0)) == (True, 0, 0)
+
+
+def test_a_platform_that_could_carry_the_player_on_counts_in_the_protected_run() -> None:
+    """A ferry (a Platform) shuttling over the spawn's side, short of the passage, may carry
+    a protected player on faster than it runs: the proof lets the player be carried to the
+    far end of its path and run on from there, so the map is not proven (without the
+    ferry it is)."""
+    level = passage()
+    ferry = PlatformSpec(Route(((0.0, FLOOR - 36.0), (100.0, FLOOR - 36.0))), 32.0, 8.0,
+                         120.0)
+    assert proven(level) and not proven(replace(level, platforms=(ferry,)))
+
+
+def test_the_proof_floods_the_map_at_most_a_bounded_number_of_times(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """Forty walkers in a passage with a way round it (a hole in its ceiling beyond their
+    floor): each could be the one that blocks it, and each costs a flood of the map's
+    cells, but no more than :data:`MAX_FLOODS` are taken."""
+    holed = passage(hole=True)
+    assert proven(passage()) and not proven(holed)
+    floods: list[int] = []
+    counting = open_path
+
+    def counted(world: World, **closed: frozenset[tuple[int, int]]) -> Reach:
+        floods.append(1)
+        return counting(world, **closed)
+    monkeypatch.setattr("game.checker.enemy_barrier.open_path", counted)
+    crowded = replace(holed, enemies=holed.enemies * 40)
+    assert not proven(crowded)
+    assert len(floods) == MAX_FLOODS
 
 
 def test_an_enemy_the_proof_cannot_keep_to_its_floor_is_not_proven() -> None:

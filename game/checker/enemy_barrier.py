@@ -36,17 +36,19 @@ The proof holds when each of these holds, each checked from the map's own number
 * **No respawn near enough** (:func:`_protected_reach`). After a lost life the player is
   protected for ``tuning.invulnerable_ticks`` ticks, and may walk through the enemy. In
   that many ticks from each respawn place (the spawn, and each Checkpoint counted on its
-  side), at full run speed and with every corner correction a ceiling's corners could
-  give, the player's box cannot reach the far side of the enemy even where the enemy is
-  nearest, nor its feet the far side of the gate.
+  side), running from standing as fast as the tuning lets it, with every corner
+  correction a ceiling's corners could give and a ride to the far end of every moving
+  Platform's route it could reach, the player's box cannot reach the far side of the
+  enemy even where the enemy is nearest, nor its feet the far side of the gate.
 
 Then at every tick the player is unprotected, its feet are in the region joined to the
 spawn or in the gate on the spawn's side of the enemy: a lost life only sends it back to
 a respawn place, and no Exit is ever touched. Where any condition fails the proof says
 nothing, and the map stays not decided, naming the enemy.
 
-Its work is bounded by the map: a flood of its cells, and a look at the cells of one
-passage.
+Its work is counted, never timed: a look at the cells of each walker's passage, and for
+each walker in a low passage one flood of the map's open cells, at most
+:data:`MAX_FLOODS` of them.
 """
 
 from __future__ import annotations
@@ -65,6 +67,8 @@ from game.sim.platforms import route_region
 from game.sim.player import run_change_px_s
 from game.sim.tuning import Tuning
 from game.sim.world import World
+
+MAX_FLOODS = 16  # floods of the map's open cells (one a walker in a low passage) a proof takes
 
 
 @dataclass(frozen=True)
@@ -109,9 +113,39 @@ def _passage(grid: TileGrid, cols: range, head: float, feet: float,
     return row, ceiling
 
 
-def blocks_the_way(world: World, number: int) -> Barrier | None:
-    """A :class:`Barrier` when enemy ``number`` is proven to block every way to an Exit
-    (the conditions of this module), else None."""
+def blocking_enemy(world: World) -> Barrier | None:
+    """The first enemy proven to block every way to an Exit (the conditions of this
+    module), or None; after :data:`MAX_FLOODS` floods it stops and proves nothing more."""
+    floods = 0
+    for number in range(len(world.level.enemies)):
+        gate = _gate(world, number)
+        if gate is None:
+            continue
+        if floods == MAX_FLOODS:
+            return None
+        floods += 1
+        barrier = _blocks(world, gate)
+        if barrier is not None:
+            return barrier
+    return None
+
+
+@dataclass(frozen=True)
+class _Gate:
+    """A walker in a low passage (what :func:`_gate` checks before any flood): where it can
+    be, its width, and the gate's cells, columns and rows."""
+
+    number: int
+    span: Box
+    width: float
+    cells: frozenset[Cell]
+    cols: range
+    rows: range
+
+
+def _gate(world: World, number: int) -> _Gate | None:
+    """The gate of walker ``number``, when it is on a floor it cannot leave in a low
+    passage with no Platform near, and no Exit in the gate."""
     span = patrol_span(world, number)
     if span is None:
         return None
@@ -150,6 +184,17 @@ def blocks_the_way(world: World, number: int) -> Barrier | None:
         return None
     if target_cells(level, world.spawn) & gate:
         return None
+    return _Gate(number, span, ew, gate, gate_cols, gate_rows)
+
+
+def _blocks(world: World, found: _Gate) -> Barrier | None:
+    """A :class:`Barrier` when no way to an Exit passes the gate (the rest of the
+    conditions: the flood, the Checkpoints, the side, the protected runs)."""
+    tuning, grid = world.tuning, world.level.grid
+    tw, pw = grid.tile_w, world.spawn.w
+    gate, gate_cols, gate_rows, ew = found.cells, found.cols, found.rows, found.width
+    low, high = found.span.left, found.span.right
+    first, last = gate_cols.start, gate_cols.stop - 1
     reach = open_path(world, closed=gate)
     if reach.touches_exit or reach.unbounded:
         return None
@@ -177,7 +222,8 @@ def blocks_the_way(world: World, number: int) -> Barrier | None:
             furthest = -_furthest(-box.x, run, shortcuts.leftwards)
             if not (furthest + pw > high - ew and furthest + pw / 2 >= first * tw):
                 return None
-    tile = (math.floor(enemy.x / tw), math.floor(enemy.y / th))
+    enemy = world.enemy_by_number[found.number].box
+    tile = (math.floor(enemy.x / tw), math.floor(enemy.y / grid.tile_h))
     return Barrier(tile, tuning.invulnerable_ticks, run)
 
 

@@ -38,7 +38,7 @@ from dataclasses import dataclass, replace
 from enum import Enum
 from pathlib import Path
 
-from game.checker.enemy_barrier import Barrier, blocks_the_way
+from game.checker.enemy_barrier import Barrier, blocking_enemy
 from game.checker.jump_envelope import Exact, exact_reach, nearest_reached
 from game.checker.reachable import Cell, Reach, open_path, reachable
 from game.checker.solver import Effort, Solution, solve
@@ -115,10 +115,9 @@ def _prove(level: Level) -> tuple[Verdict | None, Reach | None, list[str]]:
         culprit = _closing_layer(world, lambda w: not exact_reach(w).touches_exit)
         found = _out_of_reach(nearest_reached(exact, level), culprit, reach, exact)
         return found, reach, []
-    for number in range(len(level.enemies)):
-        barrier = blocks_the_way(world, number)
-        if barrier is not None:
-            return _blocked(barrier, reach), reach, []
+    barrier = blocking_enemy(world) if level.enemies else None
+    if barrier is not None:
+        return _blocked(barrier, reach), reach, []
     return None, reach, exact.unbounded
 
 
