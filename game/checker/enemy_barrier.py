@@ -73,8 +73,8 @@ MAX_FLOODS = 16  # floods of the map's open cells (one a walker in a low passage
 
 @dataclass(frozen=True)
 class Barrier:
-    """An enemy proven to block the only way: its tile, and how far a protected player
-    runs (the ticks of protection at full run speed), for the verdict's line."""
+    """An enemy proven to block the only way: its tile, the ticks a player is protected
+    after losing a life and the farthest it runs in them, for the verdict's line."""
 
     tile: Cell
     protected_ticks: int
@@ -204,8 +204,9 @@ def _blocks(world: World, found: _Gate) -> Barrier | None:
     uncounted = [start for start in starts(world) if start not in counted]
     if any(set(start.columns) & set(gate_cols) for start in uncounted):
         return None
-    left_side = any((first - 1, row) in reach.cells for row in gate_rows)
-    right_side = any((last + 1, row) in reach.cells for row in gate_rows)
+    beside = range(gate_rows.start - 1, gate_rows.stop + 1)  # (a diagonal step in too)
+    left_side = any((first - 1, row) in reach.cells for row in beside)
+    right_side = any((last + 1, row) in reach.cells for row in beside)
     if left_side == right_side:
         return None
     run = protected_run_px(tuning)
