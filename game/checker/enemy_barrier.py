@@ -27,7 +27,9 @@ The proof holds when each of these holds, each checked from the map's own number
   side of the enemy wherever it is, and leave them only to that side.
 * **The only way.** With the gate closed, the open cells joined to the spawn
   (:func:`~game.checker.reachable.open_path`, with each Checkpoint once its columns are
-  met) reach no Exit, and only one side of the gate. No Exit and no respawn place is in
+  met) reach no Exit, and beside the gate (in its rows: a tick's moves, along x then
+  along y, pass through every cell between, so the feet enter and leave it only there)
+  every open cell on one side and none on the other. No Exit and no respawn place is in
   the gate, no Checkpoint the gate could count is left uncounted, and no respawn place
   is moved by a moving Platform.
 * **Nothing else moves it or the player there.** No moving Platform's route comes near
@@ -89,6 +91,13 @@ def _full_solid(grid: TileGrid, col: int, row: int, top: float, bottom: float) -
     return any(s.kind is TileKind.SOLID and s.box.left <= left and s.box.right >= right
                and s.box.top <= top and s.box.bottom == bottom
                for s in grid.shapes_at(col, row))
+
+
+def _open(grid: TileGrid, col: int, row: int) -> bool:
+    """Is cell (col, row) open to the cell fill (in the map and not wholly one Solid tile)?"""
+    return 0 <= col < grid.cols and 0 <= row < grid.rows and not any(
+        s.kind is TileKind.SOLID and s.box.w >= grid.tile_w and s.box.h >= grid.tile_h
+        for s in grid.shapes_at(col, row))
 
 
 def _passage(grid: TileGrid, cols: range, head: float, feet: float,
@@ -204,10 +213,14 @@ def _blocks(world: World, found: _Gate) -> Barrier | None:
     uncounted = [start for start in starts(world) if start not in counted]
     if any(set(start.columns) & set(gate_cols) for start in uncounted):
         return None
-    beside = range(gate_rows.start - 1, gate_rows.stop + 1)  # (a diagonal step in too)
-    left_side = any((first - 1, row) in reach.cells for row in beside)
-    right_side = any((last + 1, row) in reach.cells for row in beside)
-    if left_side == right_side:
+    # The feet leave and enter the gate only across its sides, in its rows (each tick's
+    # moves, along x then along y, pass through the cells between): every open cell beside
+    # it on the spawn's side is joined to the spawn, and none on the other side is.
+    beside = [[(col, row) for row in gate_rows if _open(grid, col, row)]
+              for col in (first - 1, last + 1)]
+    joined = [[cell in reach.cells for cell in cells] for cells in beside]
+    left_side, right_side = any(joined[0]), any(joined[1])
+    if left_side == right_side or not all(joined[0] if left_side else joined[1]):
         return None
     run = protected_run_px(tuning)
     shortcuts = _shortcuts(world, pw)
