@@ -44,7 +44,8 @@ own :meth:`~game.sim.world.World.step`, then let walls only ever help the proof'
   player can be, and the proof stands. Each one the envelope comes near, each enemy with
   no bound, and a counted Checkpoint whose respawn place a platform's route could move,
   makes it prove nothing and is named (:attr:`Exact.unbounded`); the cell fill of
-  :mod:`game.checker.reachable`, which follows stomps and rides, may still prove the map.
+  :mod:`game.checker.reachable`, which follows stomps and rides, may still prove the map,
+  and so may :mod:`game.checker.enemy_barrier`, for a walker that blocks the only way.
 
 Heights get :data:`SLACK_PX` more than measured (the game's float sums at another height
 may round apart by far less); sideways moves are the game's own float sums, so the widest
@@ -293,7 +294,7 @@ def surfaces(grid: TileGrid, width: float) -> list[Surface]:
     return found
 
 
-def _ceilings(grid: TileGrid) -> list[Surface]:
+def ceilings(grid: TileGrid) -> list[Surface]:
     """The runs of Solid bottoms a rising head can meet (a bottom wholly against a Solid
     under it is met by no body), bottoms that touch merged, sorted by height."""
     bottoms: dict[float, list[tuple[float, float]]] = {}
@@ -357,8 +358,8 @@ def exact_reach(world: World) -> Exact:
     grid = level.grid
     w, h = world.spawn.w, world.spawn.h  # the player's box (a Player object sets its size)
     tops = surfaces(grid, w)
-    ceilings = _ceilings(grid)
-    ceiling_heights = [run.top for run in ceilings]
+    ceiling_runs = ceilings(grid)
+    ceiling_heights = [run.top for run in ceiling_runs]
     exits = list(level.exits)
     flags = [(Box(f.x - 1, f.top - f.h, f.w + 2, 2 * f.h), f, start) for f, start
              in zip(level.checkpoints, starts_of(world)[1:], strict=False)]
@@ -375,7 +376,7 @@ def exact_reach(world: World) -> Exact:
         if pairs > MAX_PAIRS:
             return _too_many()
         air = rising if launch.rising else envelope
-        corners = _corners(ceilings, ceiling_heights, launch, w, h, air)
+        corners = _corners(ceiling_runs, ceiling_heights, launch, w, h, air)
         sweep = Sweep(air, w, launch.low, launch.high, launch.standing, corners)
 
         def touches(region: Box, launch: _Launch = launch, sweep: Sweep = sweep,

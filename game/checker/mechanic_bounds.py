@@ -19,13 +19,15 @@ proof of the walls alone stands. Each bound here is an over-approximation:
   run of tops at its feet, with no wall, no other top and no platform's route in the band
   its body and its one-pixel look-ahead sweep, and a step shorter than its width) turns
   back at each end, so it is somewhere on that run, at most two steps past an end (its
-  first step is taken before it looks ahead). Any other enemy can be anywhere in the cell
-  fill of its own body (:func:`~game.checker.reachable.enemy_cells`: its own speed and
-  hop, every ledge walked off rather than turned back at, every fall, every ride and push
-  of a platform), each cell its feet can be in grown to the box its body covers there
-  (below the last row, until it is wholly below the map and out of play). A stomp only
-  takes it out of play, which leaves it nowhere. An enemy whose fill cannot be worked out
-  (physics with no bound, or past the fill's budget of steps) is not bounded, and the
+  first step is taken before it looks ahead; :mod:`game.checker.enemy_barrier` proves
+  with this bound that such a walker in a low passage blocks the way). Any other enemy
+  can be anywhere in the cell fill of its own body
+  (:func:`~game.checker.reachable.enemy_cells`: its own speed and hop, every ledge walked
+  off rather than turned back at, every fall, every ride and push of a platform), each
+  cell its feet can be in grown to the box its body covers there (below the last row,
+  until it is wholly below the map and out of play). A stomp only takes it out of play,
+  which leaves it nowhere. An enemy whose fill cannot be worked out (physics with no
+  bound, or past the fill's budget of steps) is not bounded, and the
   reach then proves nothing.
 * **Touching distance**: every bound is grown on each side by a corner correction's slide
   (``corner_correction_px``) and :data:`TOUCH_PX` more, past all the tick looks at beyond

@@ -309,6 +309,8 @@ class Reach:
     # the mechanics met on the way that the fill does not bound: while there are any, an
     # Exit left out proves nothing
     unbounded: list[str] = field(default_factory=list)
+    # the starts the fill began from: the spawn, then each checkpoint's as its flag counted
+    counted: list[Start] = field(default_factory=list)
 
     def nearest_to_exit(self) -> Cell | None:
         """The reached cell closest (as the crow flies) to an Exit's cells."""
@@ -328,6 +330,7 @@ def _flood(world: World, fill: _Fill) -> Reach:
     found = starts(world)
     pending = found[1:]
     unbounded: list[str] = []
+    counted = found[:1]
     fill.seed(found[0].box, _standing(world, found[0].box))
     while True:
         reached = fill.run()
@@ -337,13 +340,15 @@ def _flood(world: World, fill: _Fill) -> Reach:
             break
         for start in woken:
             pending.remove(start)
+            counted.append(start)
             fill.seed(start.box, _standing(world, start.box))
             if start.unbounded is not None:
                 unbounded.append(start.unbounded)
             if start.moved is not None:
                 fill.seed_anywhere(start.moved, world.spawn)
     targets = {cell for cell in target_cells(world.level, world.spawn) if fill.open(cell)}
-    return Reach(reached, bool(reached & targets), targets, unbounded=unbounded)
+    return Reach(reached, bool(reached & targets), targets, unbounded=unbounded,
+                 counted=counted)
 
 
 def _standing(world: World, box: Box) -> bool:
@@ -403,12 +408,14 @@ class _Fill:
         return set(self.seen)
 
 
-def open_path(world: World, opened: frozenset[Cell] = frozenset()) -> Reach:
+def open_path(world: World, opened: frozenset[Cell] = frozenset(),
+              closed: frozenset[Cell] = frozenset()) -> Reach:
     """Cells joined to the spawn by open cells (4 neighbours), gravity ignored; the sky above
     the map is open along its whole width. ``opened``: closed cells to count as open (to ask
-    whether some tiles are what closes the way)."""
+    whether some tiles are what closes the way); ``closed``: open cells to count as closed
+    (to ask whether the way passes through them)."""
     fill = _Fill(world.level, sky_rows=2)
-    fill.closed -= opened
+    fill.closed = (fill.closed - opened) | closed
     return _flood(world, fill)
 
 

@@ -21,7 +21,10 @@ What it teaches: keep what was *proven* apart from what was merely *not found*.
   or the platform by the tile it starts at). Where one tile layer's Solid tiles
   close the way (taking them away opens it, to the same proof; for the pixel-exact reach,
   an Exit then comes in reach: a layer that only walls an enemy in is not named), the line
-  names the layer and points at one of its tiles.
+  names the layer and points at one of its tiles. Last, an enemy the reaches leave
+  unbounded may still be proven to block the only way (:mod:`game.checker.enemy_barrier`:
+  a walker in a passage too low to get over it, with no respawn place near enough to
+  pass it while protected after a lost life); the line names it by its tile.
 * **Not decided**: the search spent its budget (or its seconds) without a route, and
   nothing proved the map impossible. That is said as such, with the bound, the work done,
   the furthest place reached and how to search further; it never reads as solved.
@@ -35,6 +38,7 @@ from dataclasses import dataclass, replace
 from enum import Enum
 from pathlib import Path
 
+from game.checker.enemy_barrier import Barrier, blocking_enemy
 from game.checker.jump_envelope import Exact, exact_reach, nearest_reached
 from game.checker.reachable import Cell, Reach, open_path, reachable
 from game.checker.solver import Effort, Solution, solve
@@ -111,6 +115,9 @@ def _prove(level: Level) -> tuple[Verdict | None, Reach | None, list[str]]:
         culprit = _closing_layer(world, lambda w: not exact_reach(w).touches_exit)
         found = _out_of_reach(nearest_reached(exact, level), culprit, reach, exact)
         return found, reach, []
+    barrier = blocking_enemy(world) if level.enemies else None
+    if barrier is not None:
+        return _blocked(barrier, reach), reach, []
     return None, reach, exact.unbounded
 
 
@@ -138,6 +145,20 @@ def _out_of_reach(tile: Cell | None, culprit: tuple[str, Cell] | None, reach: Re
                    f"touch{bounds}; this is the nearest place they reach",
                    "lower the ledges or narrow the gaps on the way (see the player's "
                    "reach in the summary), or move the Exit", reach=reach)
+
+
+def _blocked(barrier: Barrier, reach: Reach | None) -> Verdict:
+    """The IMPOSSIBLE verdict of an enemy that blocks the only way
+    (:mod:`game.checker.enemy_barrier`)."""
+    col, row = barrier.tile
+    return Verdict(Kind.IMPOSSIBLE, barrier.tile,
+                   f"impossible: the enemy at tile ({col},{row}) blocks the only way to the "
+                   "Exit, in a passage too low to jump over it or stomp it, and no place "
+                   "the player comes back to after losing a life is near enough to pass it "
+                   f"while protected (for {barrier.protected_ticks} ticks, at most "
+                   f"{math.ceil(barrier.protected_px)} px at a run); this is the enemy",
+                   "raise the passage's ceiling over the enemy, open another way round it, "
+                   "or put a Checkpoint near enough to it", reach=reach)
 
 
 def _closing_layer(world: World, proves: Callable[[World], bool],
