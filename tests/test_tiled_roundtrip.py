@@ -17,7 +17,8 @@ to its exit beside the original, so that the claim is also checked on a real run
 "Passes the checker" is the checker run on the re-saved files (``check --no-solve``). Its
 dearest part, the reach fill behind the unreachable-Coin warning, is a function of the loaded
 level alone: while the check runs, a re-saved level equal to an original (as above, apart
-from its folder) is given the fill worked out once for that original; any other gets its own.
+from its folder) is given the fill worked out once for that original
+(:mod:`tests.shipped_fills`); any other would get its own, and none does.
 """
 
 from __future__ import annotations
@@ -26,23 +27,18 @@ import functools
 import os
 import shutil
 import subprocess
-from dataclasses import replace
 from pathlib import Path
 
 import pytest
 
 from game.app.run import input_script
-from game.checker import designer_checks
 from game.checker.cli import main as levels_main
-from game.checker.reachable import FillWork, Reach, reachable
-from game.collision.aabb import Box
 from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.levels.project import OBJECT_TYPES_FILE
 from game.sim.campaign import Campaign, Outcome
 from game.sim.level import Level
-from game.sim.tuning import Tuning
-from game.sim.world import World
 from tests.in_process import call_main
+from tests.shipped_fills import folderless, share_fills
 
 TILED = shutil.which("tiled")
 SHIPPED = sorted(LEVELS_DIR.glob("*.tmx"))
@@ -86,65 +82,16 @@ def resaved(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     return folders
 
 
-def folderless(level: Level) -> Level:
-    """``level`` with its own path and its ``next_level`` made relative to the folder it was
-    read from (the one thing a copy of the project may change)."""
-    folder = level.path.parent
-    return replace(level, path=level.path.relative_to(folder), next_level=None
-                   if level.next_level is None else level.next_level.relative_to(folder))
-
-
 @functools.cache  # each original is loaded once, however many variants it is held to
 def loaded(path: Path) -> Level:
     """``path`` as a play loads it, made :func:`folderless`."""
     return folderless(load_level(path))
 
 
-FillKey = tuple[Level, Tuning, Box, bool]  # the level, its physics, the spawn, narrow or not
-
-
-def fill_key(world: World, narrow: bool) -> FillKey:
-    return folderless(world.level), world.tuning, world.spawn, narrow
-
-
-@pytest.fixture(scope="module")
-def original_fills() -> list[tuple[FillKey, Reach | None]]:
-    """The reach fills the checker works out for every original, each once: the map checks
-    are run on it, the fills they ask for kept."""
-    fills: list[tuple[FillKey, Reach | None]] = []
-
-    def fill(world: World, work: FillWork | None = None, narrow: bool = False
-             ) -> Reach | None:
-        reach = reachable(world, work, narrow)
-        if work is None:
-            fills.append((fill_key(world, narrow), reach))
-        return reach
-
-    with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(designer_checks, "reachable", fill)
-        for level in SHIPPED:
-            designer_checks.designer_findings(level, load_level(level))
-    return fills
-
-
 @pytest.fixture
-def fills_shared(original_fills: list[tuple[FillKey, Reach | None]],
-                 monkeypatch: pytest.MonkeyPatch) -> list[Path]:
-    """While the test runs, the checker's reach fill of a level equal to an original is the
-    original's; the levels given their own fill are listed."""
-    own: list[Path] = []
-
-    def fill(world: World, work: FillWork | None = None, narrow: bool = False
-             ) -> Reach | None:
-        key = fill_key(world, narrow)
-        for known, reach in original_fills:
-            if work is None and known == key:
-                return reach
-        own.append(world.level.path)
-        return reachable(world, work, narrow)
-
-    monkeypatch.setattr(designer_checks, "reachable", fill)
-    return own
+def fills_shared(monkeypatch: pytest.MonkeyPatch) -> list[Path]:
+    """The shipped levels' reach fills, for a check of copies equal to them."""
+    return share_fills(monkeypatch)
 
 
 @functools.cache  # the original is played once, however many variants it is held to
