@@ -37,6 +37,7 @@ from game.levels.closed_output import quiet_when_output_closes
 from game.sim.campaign import Campaign
 from game.sim.inputs import Action
 from tests.in_process import call_main
+from tests.test_watch import hand_over
 
 ROOT = Path(__file__).resolve().parent.parent
 SCRIPT = ROOT / "tests/scripts/01-first-steps.txt"
@@ -45,6 +46,9 @@ MAX_MESSAGE_CHARS = 1_000  # one sentence, with a path in it, is shorter than th
 FIFO_TIMEOUT_S = 60  # generous for a busy machine; a run that waits on a pipe never ends
 MAX_TEST_TICKS = 600  # random runs stay this short
 STARTUP_S = 3.0  # a headless run is ticking after this long, even on a busy machine
+# The CPU time a headless run spends after reading its input script, by when it is ticking
+# (loading the level and making the world take a tenth of it).
+TICKING_CPU_S = 0.3
 
 
 def outcome(command: Callable[[list[str]], int], args: list[str],
@@ -227,14 +231,43 @@ def test_ticks_of_5000_digits_are_bad_usage(capsys: pytest.CaptureFixture[str]) 
     assert status == 2 and "5,000 characters" in err and len(err) < MAX_MESSAGE_CHARS
 
 
+def cpu_s(pid: int) -> float | None:
+    """The CPU time the process has used (None once it has ended, or with no /proc)."""
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rpartition(")")[2].split()
+    except OSError:
+        return None
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")  # utime + stime
+
+
+def wait_until_ticking(process: subprocess.Popen[str]) -> None:
+    """Return once ``process``, a headless run that has just read its input script, has
+    spent TICKING_CPU_S more of CPU time; without /proc, after STARTUP_S."""
+    start = cpu_s(process.pid)
+    if start is None:
+        time.sleep(STARTUP_S)
+        return
+    deadline = time.monotonic() + FIFO_TIMEOUT_S  # a guard against a hang, not a speed limit
+    while (used := cpu_s(process.pid)) is not None and used - start < TICKING_CPU_S:
+        assert process.poll() is None and time.monotonic() < deadline, "the run never ticked"
+        time.sleep(0.02)
+
+
 def test_ctrl_c_exits_130_and_a_headless_run_still_writes_its_report(tmp_path: Path) -> None:
+    """The input script comes through a pipe, handed over once the run opens it: then the
+    run is past Python's start-up and its imports, and the Ctrl-C is sent once it has spent
+    the CPU time that ticking takes to begin (not after a wait for the start-up, while the
+    run ticks on)."""
     report, record = tmp_path / "report.json", tmp_path / "record.txt"
+    inputs = tmp_path / "inputs.fifo"
+    os.mkfifo(inputs)
     process = subprocess.Popen(
         [sys.executable, "-m", "game", "--headless", "--ticks", "100000000", "--inputs",
-         str(SCRIPT), "--report", str(report), "--record", str(record)],
+         str(inputs), "--report", str(report), "--record", str(record)],
         cwd=ROOT, env=ENV, stderr=subprocess.PIPE, text=True,
         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    time.sleep(STARTUP_S)  # Python is running the game's own code by then
+    hand_over(inputs, SCRIPT.read_bytes(), process)
+    wait_until_ticking(process)
     process.send_signal(signal.SIGINT)
     _, err = process.communicate(timeout=5)
     assert process.returncode == 130, err

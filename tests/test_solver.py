@@ -38,6 +38,7 @@ from game.sim.snapshot import Snapshot
 from game.sim.tuning import Tuning
 from game.sim.world import World
 from tests.in_process import call_main
+from tests.shipped_fills import share_fills
 
 ROOT = Path(__file__).resolve().parent.parent
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
@@ -134,10 +135,19 @@ def test_the_solver_solves_every_shipped_level_within_the_default_budget(level: 
     assert won
 
 
+@pytest.fixture
+def fills_shared(monkeypatch: pytest.MonkeyPatch) -> list[Path]:
+    """The map checks' reach fill of each shipped level, worked out once for the tests that
+    check them (:mod:`tests.shipped_fills`)."""
+    return share_fills(monkeypatch)
+
+
 @pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
-def test_check_accepts_each_committed_winning_script_as_proof(level: Path) -> None:
+def test_check_accepts_each_committed_winning_script_as_proof(level: Path,
+                                                               fills_shared: list[Path]) -> None:
     report = check_map(level, Options(proof=SCRIPTS / f"{level.stem}.txt"))
     assert report.verdict is Kind.SOLVED and not report.bad, report.findings
+    assert fills_shared == []
 
 
 def test_a_proof_that_does_not_win_is_not_taken_as_solved(tmp_path: Path) -> None:
@@ -315,8 +325,9 @@ def test_check_with_seconds_still_stops_and_is_not_decided() -> None:
 
 
 def test_check_with_no_path_checks_the_shipped_campaign_and_can_speak_json(
-        capsys: pytest.CaptureFixture[str]) -> None:
+        capsys: pytest.CaptureFixture[str], fills_shared: list[Path]) -> None:
     assert check([], Options(solve=False), "json") == 0
+    assert fills_shared == []
     document = json.loads(capsys.readouterr().out)
     assert [Path(m["path"]).name for m in document["maps"]] == [p.name for p in SHIPPED]
     assert document["status"] == 0

@@ -13,6 +13,12 @@ equal, field by field (every collision shape of its grid included), to the one t
 gives, apart from the folder it was read from; a play starts from that value alone and is
 deterministic, so it cannot tell the two apart. Then one level in each variant is played
 to its exit beside the original, so that the claim is also checked on a real run.
+
+"Passes the checker" is the checker run on the re-saved files (``check --no-solve``). Its
+dearest part, the reach fill behind the unreachable-Coin warning, is a function of the loaded
+level alone: while the check runs, a re-saved level equal to an original (as above, apart
+from its folder) is given the fill worked out once for that original
+(:mod:`tests.shipped_fills`); any other would get its own, and none does.
 """
 
 from __future__ import annotations
@@ -21,7 +27,6 @@ import functools
 import os
 import shutil
 import subprocess
-from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -33,6 +38,7 @@ from game.levels.project import OBJECT_TYPES_FILE
 from game.sim.campaign import Campaign, Outcome
 from game.sim.level import Level
 from tests.in_process import call_main
+from tests.shipped_fills import folderless, share_fills
 
 TILED = shutil.which("tiled")
 SHIPPED = sorted(LEVELS_DIR.glob("*.tmx"))
@@ -78,12 +84,14 @@ def resaved(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
 
 @functools.cache  # each original is loaded once, however many variants it is held to
 def loaded(path: Path) -> Level:
-    """``path`` as a play loads it, its own path and its ``next_level`` made relative to
-    the folder it was read from (the one thing a copy of the project may change)."""
-    level = load_level(path)
-    folder = level.path.parent
-    return replace(level, path=level.path.relative_to(folder), next_level=None
-                   if level.next_level is None else level.next_level.relative_to(folder))
+    """``path`` as a play loads it, made :func:`folderless`."""
+    return folderless(load_level(path))
+
+
+@pytest.fixture
+def fills_shared(monkeypatch: pytest.MonkeyPatch) -> list[Path]:
+    """The shipped levels' reach fills, for a check of copies equal to them."""
+    return share_fills(monkeypatch)
 
 
 @functools.cache  # the original is played once, however many variants it is held to
@@ -103,13 +111,14 @@ def final_state(level: Path) -> dict[str, object]:
 
 
 @pytest.mark.parametrize("variant", sorted(VARIANTS))
-def test_levels_resaved_by_tiled_pass_the_checker(variant: str,
-                                                  resaved: dict[str, Path]) -> None:
+def test_levels_resaved_by_tiled_pass_the_checker(variant: str, resaved: dict[str, Path],
+                                                  fills_shared: list[Path]) -> None:
     maps = sorted(resaved[variant].glob("*.tmx"))
     result = call_main(levels_main, ["check", "--no-solve", "--jobs", "1", *maps])
     assert result.returncode == 0, result.stdout
     assert result.stdout.startswith(f"checked {len(maps)} map(s): all playable;"), result.stdout
     assert len(result.stdout.splitlines()) == 1, result.stdout
+    assert fills_shared == []  # each re-saved level is its original, to its reach fill
 
 
 @pytest.mark.parametrize("variant", sorted(VARIANTS))

@@ -56,7 +56,7 @@ def test_a_reload_that_walls_the_player_in_starts_it_at_the_spawn() -> None:
     assert campaign.world.player.box == walled.spawn
 
 
-def _hand_over(fifo: Path, data: bytes, game: subprocess.Popen[str]) -> None:
+def hand_over(fifo: Path, data: bytes, game: subprocess.Popen[str]) -> None:
     """Write ``data`` into a FIFO as soon as the game opens it (never blocking forever)."""
     deadline = time.monotonic() + 60
     while True:
@@ -83,7 +83,7 @@ def watched_run(tmp_path: Path, new_text: str) -> dict[str, object]:
         [sys.executable, "-m", "game", "--level", str(level), "--watch", "--ticks", "400",
          "--inputs", str(inputs), "--report", str(report)],
         cwd=ROOT, env=env, stderr=subprocess.PIPE, text=True)
-    _hand_over(inputs, b"0 -left\n", game)  # the game has opened its input script...
+    hand_over(inputs, b"0 -left\n", game)  # the game has opened its input script...
     time.sleep(1.5)                        # ...and then loads the level and opens a window
     level.write_text(new_text, encoding="utf-8")
     _, errors = game.communicate(timeout=60)
