@@ -419,10 +419,13 @@ class _Search:
                 yield found
                 if found[0] == -math.inf:
                     return
+        moved = True  # the world has stepped on from ``snapshot`` since it was restored
         for choice, move_ticks in self.moves:
             if self.out_of_time():
                 return
-            snapshot.restore(self.world)
+            if moved:
+                snapshot.restore(self.world)
+                moved = False
             if choice is DROP and not self.world.player.on_ground_one_way:
                 continue
             if (not choice & STEER and move_ticks == MOVE_TICKS
@@ -439,6 +442,7 @@ class _Search:
                 self.waits[(box.x, box.y, ticks + coming)] = layer
                 move_ticks = coming
             outcome = self.try_move(snapshot, ticks, choice, move_ticks)
+            moved = True
             if late_jumps and outcome == 0 and choice in RUNS and self.ran_off_an_edge():
                 ledges.append(choice)
             child = self.child(snapshot, node, choice, ticks, move_ticks, outcome, seen, layer)
