@@ -180,10 +180,10 @@ _last_things: list[tuple[tuple[World, object, object, Members], list[object]]] =
 
 
 def _groups(world: World, names: set[str]) -> list[pygame.sprite.AbstractGroup[Any]]:
-    """The world's groups, among its attributes ``names`` (those its recipe keeps apart)."""
-    state = vars(world)
-    return [group for name in names
-            if isinstance(group := state.get(name), pygame.sprite.AbstractGroup)]
+    """The world's groups, among its attributes ``names`` (those its recipe keeps apart),
+    in the order the world holds them."""
+    return [value for name, value in vars(world).items()
+            if name in names and isinstance(value, pygame.sprite.AbstractGroup)]
 
 
 @dataclass(frozen=True)
