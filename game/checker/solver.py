@@ -165,9 +165,9 @@ COMES_PX = 16.0  # ... this close to the player
 MAX_WAIT_TICKS = 36_000  # no wait is longer than this (10 minutes of play)
 SURELY_BELOW = 1 - 1e-9  # a skip ahead rounds down, past any rounding of the floats
 # What makes a move dearer, measured on a shared 2-core machine: a tick of a small level
-# takes about 50 us and a state's snapshot 30 us; each enemy or platform adds about 2.5 us a
-# tick, each coin 1 us a tick and 3 us a snapshot (400 bodies: 1 ms a tick; 5,000 coins:
-# 5 ms a tick and 16 ms a snapshot).
+# takes about 35 us and a state's snapshot, taken and restored, 20 to 80 us; each enemy or
+# platform adds about 2.5 us a tick, each coin 0.3 us a tick and 2.5 us a snapshot (400
+# bodies: 1 ms a tick; 5,000 coins: 1.4 ms a tick and 11 ms a snapshot).
 BODIES_PER_MOVE = 16  # enemies and platforms that together make a move count one more
 COINS_PER_MOVE = 32  # coins that together make a move count one more
 
@@ -419,10 +419,13 @@ class _Search:
                 yield found
                 if found[0] == -math.inf:
                     return
+        moved = True  # the world has stepped on from ``snapshot`` since it was restored
         for choice, move_ticks in self.moves:
             if self.out_of_time():
                 return
-            snapshot.restore(self.world)
+            if moved:
+                snapshot.restore(self.world)
+                moved = False
             if choice is DROP and not self.world.player.on_ground_one_way:
                 continue
             if (not choice & STEER and move_ticks == MOVE_TICKS
@@ -439,6 +442,7 @@ class _Search:
                 self.waits[(box.x, box.y, ticks + coming)] = layer
                 move_ticks = coming
             outcome = self.try_move(snapshot, ticks, choice, move_ticks)
+            moved = True
             if late_jumps and outcome == 0 and choice in RUNS and self.ran_off_an_edge():
                 ledges.append(choice)
             child = self.child(snapshot, node, choice, ticks, move_ticks, outcome, seen, layer)

@@ -23,8 +23,9 @@ trigger is tested at all.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from math import floor
 
 import pygame
 
@@ -34,6 +35,7 @@ from game.sim.sprite import Anchor, BoxSprite, Strip, animation_index
 COIN_SPIN_FPS = 8  # spin frames per second
 COIN_PHASE_COL_PX = 16  # neighbouring coins (by 16 px column) are one spin frame apart
 
+NO_ROWS: frozenset[int] = frozenset()  # the rows filed in a column that holds no trigger
 CHECKPOINT_WAITING_FRAME = 0  # a checkpoint's strip: unlit, then lit (reached)
 CHECKPOINT_REACHED_FRAME = 1
 
@@ -67,15 +69,13 @@ class TriggerCells:
     def reached_by(self, left: float, top: float, right: float, bottom: float) -> bool:
         """Does the region reach a cell that holds a trigger?"""
         try:
-            first_col, last_col = math.floor(left / self.tile_w), math.floor(right / self.tile_w)
-            first_row, last_row = math.floor(top / self.tile_h), math.floor(bottom / self.tile_h)
+            cols: Sequence[int] = range(floor(left / self.tile_w), floor(right / self.tile_w) + 1)
+            rows = range(floor(top / self.tile_h), floor(bottom / self.tile_h) + 1)
         except (ValueError, OverflowError):
             return True  # a region with no cells to name: let the exact tests decide
-        columns: Iterable[int] = range(first_col, last_col + 1)
-        if last_col - first_col + 1 > len(self.rows):  # wider than all the filed columns
-            columns = [col for col in self.rows if first_col <= col <= last_col]
-        return any(first_row <= row <= last_row
-                   for col in columns for row in self.rows.get(col, ()))
+        if len(cols) > len(self.rows):  # wider than all the filed columns
+            cols = [col for col in self.rows if col in cols]
+        return any(not self.rows.get(col, NO_ROWS).isdisjoint(rows) for col in cols)
 
 
 class Trigger(BoxSprite):

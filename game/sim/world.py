@@ -122,9 +122,11 @@ class Measure:
     queries: bool = False
 
 
-def crossed(path: BodyMoves, thing: Trigger | Enemy) -> bool:
-    """Did the body's path this tick (its moves) overlap the thing?"""
-    return path.crosses(thing.box)
+def crossed(path: BodyMoves, thing: Trigger | Enemy, edges: Edges | None = None) -> bool:
+    """Did the body's path this tick (its moves) overlap the thing? First, cheaply: does
+    the thing overlap the whole path's ``edges`` (:meth:`BodyMoves.path_edges`)?"""
+    (left, top, right, bottom), (x, y, w, h) = edges or path.path_edges(), thing.box
+    return x < right and left < x + w and y < bottom and top < y + h and path.crosses(thing.box)
 
 
 @dataclass
@@ -215,7 +217,7 @@ class World:
         edges = path.path_edges()
         near_trigger = self.trigger_cells.reached_by(*edges)
         if near_trigger:
-            self._collect_coins(path, events)
+            self._collect_coins(path, edges, events)
         # 7. Contacts: what the player touches now; entering the exit, checkpoints.
         touching = self._player_contacts(path, edges, near_trigger, lookups.hazards)
         self._enter_contacts(touching, before[self.player], edges, lookups, events)
@@ -288,11 +290,11 @@ class World:
         body.riding = (None if ground is None or ground.col != -1
                        else self.platform_index.platform_of(ground))
 
-    def _collect_coins(self, path: BodyMoves, events: list[Event]) -> None:
+    def _collect_coins(self, path: BodyMoves, edges: Edges, events: list[Event]) -> None:
         """Step 6: coins leave their group (``kill``) as the player's path crosses them (a
         Group is walked over a copy, so a coin may leave it on the way)."""
         for coin in self.coins:
-            if crossed(path, coin):
+            if crossed(path, coin, edges):
                 coin.kill()
                 events.append(Event(EventKind.COIN, coin.value, coin.box))
 
@@ -378,12 +380,13 @@ class World:
         pairs: set[tuple[ContactKey, ContactKey]] = set()
         if near_trigger:
             pairs |= {(PLAYER_KEY, ("exit", number)) for number, goal in enumerate(self.exits)
-                      if crossed(path, goal)}
+                      if crossed(path, goal, edges)}
             pairs |= {(PLAYER_KEY, ("checkpoint", number))
-                      for number, flag in enumerate(self.checkpoints) if crossed(path, flag)}
+                      for number, flag in enumerate(self.checkpoints)
+                      if crossed(path, flag, edges)}
         pairs |= {(PLAYER_KEY, ("enemy", number))
                   for number, enemy in self.enemy_by_number.items()
-                  if enemy.alive() and crossed(path, enemy)}
+                  if enemy.alive() and crossed(path, enemy, edges)}
         if not self.hazard_cells.reached_by(*edges):
             return pairs  # no spike anywhere near the path
         cols = self.grid.cols
