@@ -62,6 +62,12 @@ What it teaches: a **beam search** over a deterministic simulation.
   into it.
 * **Best first, then beams.** First a best-first search always carries on from the state
   with the best score (counting time a little); it is quick where no waiting is needed.
+  It plays a state's moves one at a time (deferred evaluation): each waits in the queue
+  with its state's score, the move before first, then runs, then jumps (each
+  :data:`TRY_LATER_TILES` behind the one before), and is played only when it comes out,
+  the state it reaches going in with its own score. So a move that gets closer is carried
+  on at once, and a state's next move is tried only when nothing since came closer: on an
+  easy level most states have one or two of their moves played, not seven.
   Its score also counts where the feet are within their tile, leaning towards the
   neighbouring tiles' steps (:meth:`_Search.within_tile`), so a run that got further along
   a corridor goes first, not every state that stands in the same tile; and each state
@@ -107,6 +113,7 @@ from collections import deque
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NamedTuple
 
 from game.checker.enemy_timeline import Away, EnemyTimeline
 from game.checker.reachable import steps_to_exit
@@ -147,6 +154,11 @@ UNREACHABLE = math.inf
 BEST_FIRST_WEIGHT = 3.0  # how much more a tile of distance counts than a tile's worth of time
 CROWD_TILES = 0.2  # best first: each state kept in a tile puts the next there this many tiles
 #                    further back
+TRY_LATER_TILES = 0.001  # best first: each choice of a state is tried after the one before it
+#                          as if it were this many tiles further back (a tie-break only)
+TRY_ORDER: tuple[Actions, ...] = (  # ... the move before first, then runs, jumps, the rest
+    frozenset({R}), frozenset({L}), frozenset({R, J}), frozenset({L, J}),
+    frozenset({J}), frozenset(), frozenset({D, J}))
 GREEDY_SHARE = 0.5  # of a stage's moves, the best-first search may try at least this share
 FEET_PX = 0.5  # the search scores the cell just above the middle of the feet
 PLAIN_SHARE = 0.6  # of a map's budget, what the plain moves may spend before timed inputs
@@ -205,6 +217,15 @@ class Node:
     choice: Actions
     ticks: int  # ticks since the start
     lives_lost: int = 0
+
+
+class Try(NamedTuple):
+    """One move the search may try from a state, as :meth:`_Search.choices_here` finds it."""
+
+    choice: Actions
+    move_ticks: int
+    wait: tuple[float, float, int] | None = None  # a wait's (place, tick a platform comes)
+    late: bool = False  # the run's jump on the last coyote tick off the edge ahead
 
 
 @dataclass
@@ -407,6 +428,31 @@ class _Search:
                 return found
         return self.beams()
 
+    def choices_here(self, node: Node | None, ticks: int) -> list[Try]:
+        """The moves worth trying from the state the world is in (reached by ``node`` at
+        tick ``ticks``), in the order of :attr:`moves`: in the air steer (or carry on as
+        the move before did), DROP only on a one-way floor, waits only where waiting helps
+        (and one that waits for a platform only if one comes)."""
+        player = self.world.player
+        choices: list[Try] = []
+        for choice, move_ticks in self.moves:
+            if choice is DROP and not player.on_ground_one_way:
+                continue
+            if (not choice & STEER and move_ticks == MOVE_TICKS and not player.on_ground
+                    and (node is None or node.choice != choice)):
+                continue  # in the air, steer (or carry on straight up or down as before)
+            if move_ticks != MOVE_TICKS and not self.waiting_helps():
+                continue
+            if move_ticks == UNTIL_A_PLATFORM_COMES:
+                coming = self.ticks_until_a_platform_comes()
+                if coming is None:
+                    continue  # none comes
+                box = player.box
+                choices.append(Try(choice, coming, (box.x, box.y, ticks + coming)))
+                continue
+            choices.append(Try(choice, move_ticks))
+        return choices
+
     def children(self, snapshot: Snapshot, node: Node | None, ticks: int,
                  seen: dict[StateKey, int], layer: int = 0, late_jumps: bool = False,
                  ) -> Iterator[tuple[float, Snapshot, Node]]:
@@ -419,28 +465,17 @@ class _Search:
                 yield found
                 if found[0] == -math.inf:
                     return
-        moved = True  # the world has stepped on from ``snapshot`` since it was restored
-        for choice, move_ticks in self.moves:
+        snapshot.restore(self.world)
+        moved = False  # the world has stepped on from ``snapshot`` since it was restored
+        for choice, move_ticks, wait, _ in self.choices_here(node, ticks):
             if self.out_of_time():
                 return
+            if wait is not None:
+                if wait in self.waits:
+                    continue  # a wait here already met this platform
+                self.waits[wait] = layer
             if moved:
                 snapshot.restore(self.world)
-                moved = False
-            if choice is DROP and not self.world.player.on_ground_one_way:
-                continue
-            if (not choice & STEER and move_ticks == MOVE_TICKS
-                    and not self.world.player.on_ground
-                    and (node is None or node.choice != choice)):
-                continue  # in the air, steer (or carry on straight up or down as before)
-            if move_ticks != MOVE_TICKS and not self.waiting_helps():
-                continue
-            if move_ticks == UNTIL_A_PLATFORM_COMES:
-                coming = self.ticks_until_a_platform_comes()
-                box = self.world.player.box
-                if coming is None or (box.x, box.y, ticks + coming) in self.waits:
-                    continue  # none comes, or a wait here already met this platform
-                self.waits[(box.x, box.y, ticks + coming)] = layer
-                move_ticks = coming
             outcome = self.try_move(snapshot, ticks, choice, move_ticks)
             moved = True
             if late_jumps and outcome == 0 and choice in RUNS and self.ran_off_an_edge():
@@ -453,16 +488,23 @@ class _Search:
         for run in ledges:
             if self.out_of_time():
                 return
-            jump = self.jump_on_the_last_coyote_tick(snapshot, node, ticks, run)
-            if jump is None:
-                continue
-            ran, outcome = jump
-            child = self.child(snapshot, ran, run | {J}, ran.ticks, MOVE_TICKS, outcome, seen,
-                               layer)
+            child = self.late_jump(snapshot, node, ticks, run, seen, layer)
             if child is not None:
                 yield child
                 if child[0] == -math.inf:
                     return
+
+    def late_jump(self, snapshot: Snapshot, node: Node | None, ticks: int, run: Actions,
+                  seen: dict[StateKey, int], layer: int,
+                  ) -> tuple[float, Snapshot, Node] | None:
+        """The state after the jump on the last coyote tick off the edge ``run`` goes over
+        from ``snapshot`` (:meth:`jump_on_the_last_coyote_tick`), scored as :meth:`child`
+        scores it."""
+        jump = self.jump_on_the_last_coyote_tick(snapshot, node, ticks, run)
+        if jump is None:
+            return None
+        ran, outcome = jump
+        return self.child(snapshot, ran, run | {J}, ran.ticks, MOVE_TICKS, outcome, seen, layer)
 
     def child(self, snapshot: Snapshot, parent: Node | None, choice: Actions, start: int,
               move_ticks: int, outcome: int, seen: dict[StateKey, int], layer: int,
@@ -799,27 +841,79 @@ class _Search:
         """Always carry on from the state closest to an Exit, counting time a little
         (weighted A*): quick on levels that need no waiting. Closest counts the place
         within the tile (:meth:`within_tile`) and the states kept in the tile before
-        (:data:`CROWD_TILES` each)."""
+        (:data:`CROWD_TILES` each).
+
+        A state's moves are tried one at a time (deferred evaluation): each waits in the
+        queue with its state's score, the move before first, then :data:`TRY_ORDER`, each
+        :data:`TRY_LATER_TILES` behind the one before, and is played only when it comes
+        out; the state it leads to goes in with its own score. So a move that gets closer
+        is carried on at once, and the next move of a state is tried only when nothing
+        tried since came closer. A run that went off an edge puts in its jump on the last
+        coyote tick, behind the state's other moves. In the second stage a state's timed
+        inputs (:meth:`timed_children`) are all tried when the state comes out."""
         grid, tuning = self.level.grid, self.world.tuning
         tiles_per_tick = tuning.run_speed_px_s * tuning.tick_s / grid.tile_w
         seen: dict[StateKey, int] = {}
         crowd: dict[tuple[int, int], int] = {}  # the states kept in each tile
-        queue: list[tuple[float, int, Snapshot, Node | None]] = [(0.0, 0, self.start, None)]
+        # (priority, order, state, its Node, the move to try from it or None for the state
+        # itself, the state's moves worth trying)
+        queue: list[tuple[float, int, Snapshot, Node | None, Try | None, list[Try]]] = []
         order = 0
+
+        def keep(score: float, child_state: Snapshot, child: Node) -> None:
+            """Put a new state in the queue (the world is in its state)."""
+            nonlocal order
+            order += 1
+            cell = self.cell()
+            kept = crowd.get(cell, 0)
+            crowd[cell] = kept + 1
+            priority = (score + self.within_tile() + kept * CROWD_TILES
+                        + child.ticks * tiles_per_tick / BEST_FIRST_WEIGHT)
+            heapq.heappush(queue, (priority, order, child_state, child, None,
+                                   self.choices_here(child, child.ticks)))
+
+        self.start.restore(self.world)
+        queue.append((0.0, 0, self.start, None, None, self.choices_here(None, 0)))
         while queue and self.moves_tried < max_moves:
-            _, _, snapshot, node = heapq.heappop(queue)
+            priority, _, snapshot, node, trying, choices = heapq.heappop(queue)
             ticks = node.ticks if node is not None else 0
-            for score, child_state, child in self.children(snapshot, node, ticks, seen,
-                                                           late_jumps=True):
-                if score == -math.inf:
-                    return child
-                order += 1
-                cell = self.cell()  # (the world is in the child's state)
-                kept = crowd.get(cell, 0)
-                crowd[cell] = kept + 1
-                priority = (score + self.within_tile() + kept * CROWD_TILES
-                            + child.ticks * tiles_per_tick / BEST_FIRST_WEIGHT)
-                heapq.heappush(queue, (priority, order, child_state, child))
+            if trying is None:  # a state comes out: its moves go in, to be tried one by one
+                if self.timed:
+                    for found in self.timed_children(snapshot, node, ticks, seen, 0):
+                        if found[0] == -math.inf:
+                            return found[2]
+                        keep(*found)
+                before = node.choice if node is not None else None
+                ranked = sorted(choices, key=lambda c: (
+                    c.choice != before or c.move_ticks != MOVE_TICKS,
+                    TRY_ORDER.index(c.choice) if c.move_ticks == MOVE_TICKS else len(TRY_ORDER)))
+                for rank, move in enumerate(ranked):
+                    order += 1
+                    heapq.heappush(queue, (priority + rank * TRY_LATER_TILES, order, snapshot,
+                                           node, move, []))
+                if self.out_of_time():
+                    return None
+                continue
+            if trying.late:  # (it restores the state itself)
+                found = self.late_jump(snapshot, node, ticks, trying.choice, seen, 0)
+            else:
+                if trying.wait is not None:
+                    if trying.wait in self.waits:
+                        continue  # a wait here already met this platform
+                    self.waits[trying.wait] = 0
+                snapshot.restore(self.world)
+                outcome = self.try_move(snapshot, ticks, trying.choice, trying.move_ticks)
+                if outcome == 0 and trying.choice in RUNS and self.ran_off_an_edge():
+                    order += 1
+                    heapq.heappush(queue, (priority + TRY_LATER_TILES * len(TRY_ORDER), order,
+                                           snapshot, node,
+                                           Try(trying.choice, MOVE_TICKS, late=True), []))
+                found = self.child(snapshot, node, trying.choice, ticks, trying.move_ticks,
+                                   outcome, seen, 0)
+            if found is not None:
+                if found[0] == -math.inf:
+                    return found[2]
+                keep(*found)
             if self.out_of_time():
                 return None
         return None
