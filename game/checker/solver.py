@@ -63,11 +63,11 @@ What it teaches: a **beam search** over a deterministic simulation.
 * **Best first, then beams.** First a best-first search always carries on from the state
   with the best score (counting time a little); it is quick where no waiting is needed.
   It plays a state's moves one at a time (deferred evaluation): each waits in the queue
-  with its state's score, runs first, then jumps (:data:`TRY_ORDER`), and is played only
-  when it comes out, the state it reaches going in with its own score. So a move that gets
-  closer is carried on at once, and a state's next move is played only when nothing played
-  since came closer: First Steps is solved in 724 moves, where playing all seven of every
-  state's moves took 2,510.
+  with its state's score, the runs and their jumps first (:data:`TRY_ORDER`), and is
+  played only when it comes out, the state it reaches going in with its own score. So a
+  move that gets closer is carried on at once, and a state's next move is played only
+  when nothing played since came closer: First Steps is solved in 724 moves, where
+  playing all seven of every state's moves took 2,510.
   Its score also counts where the feet are within their tile, leaning towards the
   neighbouring tiles' steps (:meth:`_Search.within_tile`), so a run that got further along
   a corridor goes first, not every state that stands in the same tile; and each state
@@ -156,8 +156,8 @@ CROWD_TILES = 0.2  # best first: each state kept in a tile puts the next there t
 #                    further back
 TRY_LATER_TILES = 0.001  # best first: each move of a state waits this many tiles behind the
 #                          one before it in TRY_ORDER (a tie-break only) ...
-TRY_ORDER: tuple[Actions, ...] = (  # ... runs first (they carry on along a floor), then jumps,
-#                                     the waits last
+TRY_ORDER: tuple[Actions, ...] = (  # ... rightwards first, each run before its jump, then
+#                                     the moves on the spot; the waits after them all
     frozenset({R}), frozenset({R, J}), frozenset({L}), frozenset({L, J}),
     frozenset({J}), frozenset(), frozenset({D, J}))
 GREEDY_SHARE = 0.5  # of a stage's moves, the best-first search may try at least this share
