@@ -22,7 +22,6 @@ trigger is tested at all.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from math import floor
@@ -61,8 +60,8 @@ class TriggerCells:
 
     def file(self, box: Box) -> None:
         x, y, w, h = box
-        first_col, last_col = math.floor(x / self.tile_w), math.floor((x + w) / self.tile_w)
-        first_row, last_row = math.floor(y / self.tile_h), math.floor((y + h) / self.tile_h)
+        first_col, last_col = floor(x / self.tile_w), floor((x + w) / self.tile_w)
+        first_row, last_row = floor(y / self.tile_h), floor((y + h) / self.tile_h)
         for col in range(first_col, last_col + 1):
             self.rows.setdefault(col, set()).update(range(first_row, last_row + 1))
 
@@ -90,7 +89,7 @@ class Coin(Trigger):
     def __init__(self, box: Box, value: int) -> None:
         super().__init__(box)
         self.value = value
-        self.phase = math.floor(box.x / COIN_PHASE_COL_PX)
+        self.phase = floor(box.x / COIN_PHASE_COL_PX)
 
     def frame_image(self, strip: Strip, frame: int) -> pygame.Surface:
         return strip.frame(animation_index(frame, COIN_SPIN_FPS, range(len(strip.right)),
