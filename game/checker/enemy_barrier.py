@@ -60,8 +60,7 @@ from dataclasses import dataclass
 
 from game.checker.jump_envelope import SLACK_PX, ceilings
 from game.checker.mechanic_bounds import patrol_span, touch_px
-from game.checker.reachable import SLACK_PX as FEET_SLACK_PX
-from game.checker.reachable import Cell, open_path, starts, target_cells
+from game.checker.reachable import Cell, feet_cell, open_path, starts, target_cells
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind
 from game.collision.tile_grid import TileGrid
@@ -226,7 +225,7 @@ def _blocks(world: World, found: _Gate) -> Barrier | None:
     shortcuts = _shortcuts(world, pw)
     for start in counted:
         box = start.box
-        if _feet_cell(grid, box) in gate:
+        if feet_cell(grid, box.x + box.w / 2, box.bottom) in gate:
             return None
         if left_side:
             furthest = _furthest(box.x, run, shortcuts.rightwards)
@@ -290,8 +289,3 @@ def _furthest(x: float, run: float, shortcuts: list[tuple[float, float]]) -> flo
         furthest = max(furthest, put + run)
     return furthest
 
-
-def _feet_cell(grid: TileGrid, box: Box) -> Cell:
-    """The cell the middle of the feet is in, as the cell fill reads it."""
-    return (math.floor((box.x + box.w / 2) / grid.tile_w),
-            math.floor((box.bottom - FEET_SLACK_PX) / grid.tile_h))

@@ -206,7 +206,9 @@ def _closed_cells(grid: TileGrid) -> set[Cell]:
             if s.kind is TileKind.SOLID and s.box.w >= grid.tile_w and s.box.h >= grid.tile_h}
 
 
-def _feet_cell(grid: TileGrid, x: float, feet_y: float) -> Cell:
+def feet_cell(grid: TileGrid, x: float, feet_y: float) -> Cell:
+    """The cell of the point ``x`` at feet height ``feet_y``, as the fill reads a body's
+    feet (:data:`SLACK_PX` up, so feet flush on a top are in the cell above it)."""
     return math.floor(x / grid.tile_w), math.floor((feet_y - SLACK_PX) / grid.tile_h)
 
 
@@ -375,7 +377,7 @@ class _Fill:
 
     def seed(self, box: Box, standing: bool) -> None:
         del standing  # an open-cell flood ignores gravity
-        cell = _feet_cell(self.grid, box.x + box.w / 2, box.bottom)
+        cell = feet_cell(self.grid, box.x + box.w / 2, box.bottom)
         if cell not in self.seen:
             self.seen.add(cell)
             self.queue.append(cell)
@@ -384,8 +386,8 @@ class _Fill:
         """The open cells the middle of the feet is in for a body whose top-left corner is
         anywhere in ``corners``."""
         grid = self.grid
-        first = _feet_cell(grid, corners.left + body.w / 2, corners.top + body.h)
-        last = _feet_cell(grid, corners.right + body.w / 2, corners.bottom + body.h)
+        first = feet_cell(grid, corners.left + body.w / 2, corners.top + body.h)
+        last = feet_cell(grid, corners.right + body.w / 2, corners.bottom + body.h)
         for col in range(first[0], last[0] + 1):
             for row in range(first[1], last[1] + 1):
                 if self.open((col, row)):
@@ -501,7 +503,7 @@ class _JumpFill(_Fill):
 
     def seed(self, box: Box, standing: bool) -> None:
         """Start at ``box``: a jump from where it stands, or a fall from where it floats."""
-        cell = _feet_cell(self.grid, box.x + box.w / 2, box.bottom)
+        cell = feet_cell(self.grid, box.x + box.w / 2, box.bottom)
         if self.narrow:
             self.seen.add(cell)
         else:  # a start on a platform's route rides or is pushed from there
