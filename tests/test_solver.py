@@ -11,10 +11,12 @@ import shutil
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
+from collections.abc import Sequence
 from pathlib import Path
 
 import pytest
 
+import game.checker.solver as solver
 from game.app.run import input_script
 from game.checker import reach
 from game.checker.checking import Options, check_map
@@ -32,8 +34,10 @@ from game.checker.solver import (
     solve,
 )
 from game.checker.verdict import Kind
+from game.collision.aabb import Box
 from game.levels import LEVELS_DIR, load_level
-from game.sim.inputs import Action
+from game.sim.inputs import Action, Actions
+from game.sim.level import Level
 from game.sim.snapshot import Snapshot
 from game.sim.tuning import Tuning
 from game.sim.world import World
@@ -127,12 +131,13 @@ def test_an_attribute_first_seen_as_none_is_copied_once_it_holds_a_list() -> Non
 @pytest.mark.parametrize("level", SHIPPED, ids=[p.stem for p in SHIPPED])
 def test_the_solver_solves_every_shipped_level_within_the_default_budget(level: Path) -> None:
     """Within the map's own budget, and by the plain moves alone: no shipped level needs
-    the timed inputs of the second stage, so checking them costs what it did."""
+    the timed inputs of the second stage, so checking them costs what it did. A route found
+    is a route the game replays: :func:`solve` replays it from the spawn before it says so
+    (``test_a_route_that_does_not_replay_is_never_called_found`` breaks that replay)."""
     solution = solve(load_level(level))
     assert solution.found and solution.own_budget
     assert solution.moves_tried < solution.budget * PLAIN_SHARE
-    won, _ = replay(level, solution.held)
-    assert won
+    assert len(solution.route) == solution.exit_tick - 1  # the replay's place after each tick
 
 
 @pytest.fixture
@@ -226,6 +231,20 @@ def test_solve_writes_a_script_the_game_replays_to_the_exit_and_a_picture(
                             capture_output=True, text=True, timeout=600, check=False, cwd=ROOT)
     assert played.returncode == 0, played.stderr
     assert '"levels_completed": 1' in report.read_text(encoding="utf-8")
+
+
+def test_a_route_that_does_not_replay_is_never_called_found(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """:func:`solve` replays the route it found from the spawn, as the game plays it, and
+    says so only if the replay reaches the Exit: here the replay loses the route's last
+    tick, the one that reaches it."""
+    def short_of_the_exit(level_path: Path, held: Sequence[Actions],
+                          level: Level | None = None) -> tuple[bool, list[Box]]:
+        return replay(level_path, held[:-1], level)
+
+    monkeypatch.setattr(solver, "replay", short_of_the_exit)
+    with pytest.raises(AssertionError, match="the route found does not replay"):
+        solve(load_level(FIRST))
 
 
 def test_solve_says_how_far_it_got_when_the_exit_is_walled_in(tmp_path: Path) -> None:
