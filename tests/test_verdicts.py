@@ -20,7 +20,7 @@ import pytest
 from game.checker.cli import EXIT_UNDECIDED, main
 from game.checker.reach import DEFAULT_LIMITS, jump_path
 from game.checker.reachable import jump_rise, open_path, reachable, starts
-from game.checker.solver import Effort, replay, solve
+from game.checker.solver import Effort, replay
 from game.checker.verdict import Kind, Verdict, judge
 from game.collision.aabb import Box
 from game.sim.campaign import Campaign, Outcome
@@ -650,7 +650,11 @@ def test_a_map_won_through_a_mechanic_is_not_called_impossible_when_the_search_s
 def test_a_search_counts_every_life_a_crush_takes_within_one_move() -> None:
     """Under the crusher, lives go one a tick: a move of the search may lose all of them,
     and a route found must still win when the game replays it (solve() replays every route
-    it returns, and fails loudly on one that does not win)."""
-    level = respawn_on_a_crusher()
-    solution = solve(level, EFFORT, {})
+    it returns, and fails loudly on one that does not win). The search is the one the
+    crusher's map gets when it is judged at :data:`EFFORT` (:func:`judged`, shared with
+    test_a_winnable_map_is_never_called_impossible)."""
+    level, verdict = judged("high ground reached from a respawn a crusher moved")
+    assert level == respawn_on_a_crusher()
+    solution = verdict.solution
+    assert solution is not None and solution.moves_tried > 0  # searched, not proven
     assert not solution.found or replay(level.path, solution.held, level)[0]
