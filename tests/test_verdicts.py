@@ -601,7 +601,9 @@ def test_a_respawn_deep_in_rock_lies_in_the_bound_the_proof_uses() -> None:
     """A flag deep in rock, a small lift's route crossing its foot: the game puts a player
     coming back at the nearest free place, 161.5 px left, off the map's side; a place free
     of the tiles and of the route, 169 px away up and to the right, is what the proof finds
-    first, and the range it starts the player from still holds the game's place."""
+    first, and the range it starts the player from still holds the game's place, wherever
+    the lift is on its round trip (the place is worked out from the tiles and the lift: it
+    is asked once for each place the lift takes)."""
     pockets = {(18, 10), (19, 4)}
     rock = [Box(c * TILE, r * TILE, TILE, TILE) for c in range(32) for r in range(32)
             if (c, r) not in pockets]
@@ -611,12 +613,21 @@ def test_a_respawn_deep_in_rock_lies_in_the_bound_the_proof_uses() -> None:
     (_, start) = starts(World(level))
     assert start.moved is not None
     world = World(level)
-    for _ in range(30):
+    round_trip = round(2 * 12 / (40.0 * TUNING.tick_s))  # ticks: 12 px down and back up
+    lift_places: set[Box] = set()
+    for _ in range(round_trip):
         world.step(frozenset())
+        (moving,) = world.platforms
+        if moving.box in lift_places:
+            continue  # the same tiles and lift as on a tick checked before
+        lift_places.add(moving.box)
         place = world._checkpoint_spawn(0, world.solids)
         assert place == Box(-12, 259.25, 12, 14)
         assert start.moved.left <= place.x <= start.moved.right
         assert start.moved.top <= place.y <= start.moved.bottom
+    (moving,) = world.platforms
+    assert moving.box.y == 250.0  # back where it started, every place between taken
+    assert len(lift_places) > round_trip // 2
 
 
 def test_a_respawn_a_platform_may_move_without_a_bound_leaves_the_map_not_decided(
