@@ -31,6 +31,7 @@ from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.snapshot import Snapshot
+from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
 from tests.maps import level_from_ascii, level_from_boxes
 from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, SPAWN, WIDTH, exit_on, ferry, gap
@@ -191,8 +192,8 @@ def test_the_air_beside_a_cliff_is_left_for_the_stairs_once_it_is_crowded() -> N
     assert solution.moves_tried < solution.budget * PLAIN_SHARE
 
 
-MAZE_CORRIDORS = 20  # corridors two tiles high, each run from one end to the other
-MAZE_WIDTH = 64  # tiles across, the walls at both ends included
+MAZE_CORRIDORS = 10  # corridors two tiles high, each run from one end to the other
+MAZE_WIDTH = 32  # tiles across, the walls at both ends included
 MOVES_PER_CORRIDOR_TILE = 14  # about 6 moves for each state carried on from, 2 states a tile
 
 
@@ -223,7 +224,10 @@ def test_a_long_maze_of_low_corridors_is_solved_with_a_few_moves_a_tile() -> Non
     level = serpentine_maze()
     solution = solve(level)
     assert solution.found and solution.own_budget
-    assert solution.exit_tick > 10_000
+    tuning = Tuning()
+    run_px_per_tick = tuning.run_speed_px_s * tuning.tick_s
+    hole_to_hole_px = (MAZE_WIDTH - 6) * level.grid.tile_w  # the least run along a corridor
+    assert solution.exit_tick > MAZE_CORRIDORS * hole_to_hole_px / run_px_per_tick > 2_000
     tiles = MAZE_CORRIDORS * (MAZE_WIDTH - 2)
     assert solution.moves_tried <= MOVES_PER_CORRIDOR_TILE * tiles, solution.moves_tried
 

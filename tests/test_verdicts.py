@@ -20,7 +20,7 @@ import pytest
 from game.checker.cli import EXIT_UNDECIDED, main
 from game.checker.reach import DEFAULT_LIMITS, jump_path
 from game.checker.reachable import jump_rise, open_path, reachable, starts
-from game.checker.solver import Effort, replay, solve
+from game.checker.solver import Effort, replay
 from game.checker.verdict import Kind, Verdict, judge
 from game.collision.aabb import Box
 from game.sim.campaign import Campaign, Outcome
@@ -601,7 +601,9 @@ def test_a_respawn_deep_in_rock_lies_in_the_bound_the_proof_uses() -> None:
     """A flag deep in rock, a small lift's route crossing its foot: the game puts a player
     coming back at the nearest free place, 161.5 px left, off the map's side; a place free
     of the tiles and of the route, 169 px away up and to the right, is what the proof finds
-    first, and the range it starts the player from still holds the game's place."""
+    first, and the range it starts the player from still holds the game's place, wherever
+    the lift is on its round trip (the place is worked out from the tiles and the lift: it
+    is asked once for each place the lift takes)."""
     pockets = {(18, 10), (19, 4)}
     rock = [Box(c * TILE, r * TILE, TILE, TILE) for c in range(32) for r in range(32)
             if (c, r) not in pockets]
@@ -611,12 +613,21 @@ def test_a_respawn_deep_in_rock_lies_in_the_bound_the_proof_uses() -> None:
     (_, start) = starts(World(level))
     assert start.moved is not None
     world = World(level)
-    for _ in range(30):
+    round_trip = round(2 * 12 / (40.0 * TUNING.tick_s))  # ticks: 12 px down and back up
+    lift_places: set[Box] = set()
+    for _ in range(round_trip):
         world.step(frozenset())
+        (moving,) = world.platforms
+        if moving.box in lift_places:
+            continue  # the same tiles and lift as on a tick checked before
+        lift_places.add(moving.box)
         place = world._checkpoint_spawn(0, world.solids)
         assert place == Box(-12, 259.25, 12, 14)
         assert start.moved.left <= place.x <= start.moved.right
         assert start.moved.top <= place.y <= start.moved.bottom
+    (moving,) = world.platforms
+    assert moving.box.y == 250.0  # back where it started, every place between taken
+    assert len(lift_places) > round_trip // 2
 
 
 def test_a_respawn_a_platform_may_move_without_a_bound_leaves_the_map_not_decided(
@@ -650,7 +661,11 @@ def test_a_map_won_through_a_mechanic_is_not_called_impossible_when_the_search_s
 def test_a_search_counts_every_life_a_crush_takes_within_one_move() -> None:
     """Under the crusher, lives go one a tick: a move of the search may lose all of them,
     and a route found must still win when the game replays it (solve() replays every route
-    it returns, and fails loudly on one that does not win)."""
-    level = respawn_on_a_crusher()
-    solution = solve(level, EFFORT, {})
+    it returns, and fails loudly on one that does not win). The search is the one the
+    crusher's map gets when it is judged at :data:`EFFORT` (:func:`judged`, shared with
+    test_a_winnable_map_is_never_called_impossible)."""
+    level, verdict = judged("high ground reached from a respawn a crusher moved")
+    assert level == respawn_on_a_crusher()
+    solution = verdict.solution
+    assert solution is not None and solution.moves_tried > 0  # searched, not proven
     assert not solution.found or replay(level.path, solution.held, level)[0]
