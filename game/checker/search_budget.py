@@ -12,7 +12,8 @@ most :data:`MAX_BUDGET`. The budget counts moves, never seconds, so every machin
 the same verdict. Each shipped level is solved within the plain moves' share of its budget
 (:data:`~game.checker.solver.PLAIN_SHARE`: 24 moves a reached cell; a test keeps it so); a
 maze of corridors needs more than its route's tiles, as the search also walks the corridors
-that lead nowhere (a serpentine of low corridors, with none, takes about 12 moves a tile).
+that lead nowhere (a serpentine of low corridors, with none, takes about 6 moves a tile;
+``tests/test_solver_search.py`` keeps it under 14).
 """
 
 from __future__ import annotations
