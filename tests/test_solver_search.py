@@ -2,10 +2,12 @@
 a beam keeps one state a tile while others are left, a stuck beam goes back a few layers
 and widens instead of starting again from the spawn, the air beside a cliff is left for the
 stairs once crowded, a long maze of low corridors is solved by the best-first search
-with a few moves a tile, and an easy level by playing few of each state's moves."""
+with a few moves a tile, an easy level by playing few of each state's moves, and the
+beams keep the jumps that clear a spike bed."""
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 from collections.abc import Iterator
 from typing import cast
@@ -26,13 +28,14 @@ from game.checker.solver import (
     solve,
 )
 from game.collision.aabb import Box
+from game.collision.shapes import TileKind, TileShape
 from game.levels import FIRST_LEVEL, load_level
 from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.snapshot import Snapshot
 from game.sim.world import EventKind, World
-from tests.maps import level_from_ascii, level_from_boxes
+from tests.maps import TILE, level_from_ascii, level_from_boxes
 from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, SPAWN, WIDTH, exit_on, ferry, gap
 
 
@@ -238,3 +241,29 @@ def test_an_easy_level_is_solved_playing_few_of_each_state_s_moves() -> None:
     solution = solve(load_level(FIRST_LEVEL))
     assert solution.found and solution.own_budget
     assert solution.moves_tried < EASY_LEVEL_MOVES, solution.moves_tried
+
+
+SPIKE_BEDS = 5  # beds two spikes wide, on the way to the Exit
+SPIKE_BED_MOVES = 1_500  # the route is about 95 moves long
+
+
+def spike_beds() -> Level:
+    """Short spike beds (the shipped spikes: 14x8 px at the foot of their cell) on a flat
+    floor, and a moving platform in a far corner, so the beams search first."""
+    row = "P" + "      ^^" * SPIKE_BEDS + "      D  "
+    level = level_from_ascii(["", "", "", "", row.replace("^", " "), "#" * len(row)])
+    for col, char in enumerate(row):
+        if char == "^":
+            level.grid.put(col, 4, TileShape(Box(col * TILE + 1, 4 * TILE + 8, 14, 8),
+                                             TileKind.HAZARD, col, 4))
+    corner = PlatformSpec(Route(((0.0, 0.0), (32.0, 0.0))), 16.0, 8.0, 20.0)
+    return dataclasses.replace(level, platforms=(corner,))
+
+
+def test_the_beams_keep_the_jumps_that_clear_a_spike_bed() -> None:
+    """A jump that comes down on spikes scores as a fall into a pit: scored by its tile
+    alone, the jumps that went furthest before landing on the spikes filled the beam, and
+    every life was lost (5,876 moves)."""
+    solution = solve(spike_beds())
+    assert solution.found and solution.own_budget
+    assert solution.moves_tried < SPIKE_BED_MOVES, solution.moves_tried

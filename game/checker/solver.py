@@ -58,8 +58,10 @@ What it teaches: a **beam search** over a deterministic simulation.
   of the reach proof (:func:`game.checker.reachable.steps_to_exit`): it knows that a ledge
   too high must be climbed from elsewhere, and a state from which no step leads on to an
   Exit (at the bottom of a pit) is dropped. The beams add a penalty for falling with no
-  floor below: standing at the edge of a pit waiting for a platform is better than jumping
-  into it.
+  floor below, or with spikes (Hazard tiles) on the first floor below: standing at the
+  edge of a pit waiting for a platform is better than jumping into it, and a jump that
+  comes down on a spike bed is not kept in place of one that clears it (Dusk Rhythm's
+  beams jumped into its short spike beds until every life was lost, and took 11,379 moves).
 * **Best first, then beams.** First a best-first search always carries on from the state
   with the best score (counting time a little); it is quick where no waiting is needed.
   It plays a state's moves one at a time (deferred evaluation): each waits in the queue
@@ -145,7 +147,8 @@ DROP = CHOICES[-1]  # only tried while standing on a one-way floor
 STEER = frozenset({L, R})  # in the air, a move steers, or carries on as the one before did
 RUNS = (frozenset({R}), frozenset({L}))  # the moves that may run off an edge
 LAST_COYOTE_TICK = 2  # coyote ticks left before the tick on which a jump is the last one
-PIT_PENALTY_TILES = 6.0  # falling with no floor below costs as much as this much distance
+PIT_PENALTY_TILES = 6.0  # falling with no floor below (or spikes on it) costs as much as
+#                          this much distance
 STALL_MOVES = 60  # a beam that gets no closer for this many moves (plus a platform's
 #                   round trip) is stuck
 BACK_MOVES = 20  # a stuck beam goes back this many moves (doubling if stuck again) ...
@@ -359,8 +362,12 @@ class _Search:
             return UNREACHABLE
         if self.pit_penalty and not world.player.on_ground and world.player.vy > 0:
             below = Box(box.x, box.bottom, box.w, max(1.0, grid.height_px - box.bottom))
-            if not any(s.kind is not TileKind.HAZARD for s in world.solids.shapes_in(below)):
-                return steps + self.pit_penalty
+            shapes = world.solids.shapes_in(below)
+            floor = min((s.box.top for s in shapes if s.kind is not TileKind.HAZARD),
+                        default=math.inf)
+            if floor == math.inf or any(s.box.top <= floor for s in shapes
+                                        if s.kind is TileKind.HAZARD):
+                return steps + self.pit_penalty  # no floor below, or spikes on it
         return float(steps)
 
     def key(self, choice: Actions) -> StateKey:
