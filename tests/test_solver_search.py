@@ -2,8 +2,8 @@
 a beam keeps one state a tile while others are left, a stuck beam goes back a few layers
 and widens instead of starting again from the spawn, the air beside a cliff is left for the
 stairs once crowded, a long maze of low corridors is solved by the best-first search
-with a few moves a tile, an easy level by playing few of each state's moves, and the
-beams keep the jumps that clear a spike bed."""
+with a few moves a tile, an easy level by playing few of each state's moves, the beams
+keep the jumps that clear a spike bed, and they lean along the level steps of a ride."""
 
 from __future__ import annotations
 
@@ -25,11 +25,12 @@ from game.checker.solver import (
     Effort,
     Node,
     _Search,
+    plateau_distances,
     solve,
 )
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind, TileShape
-from game.levels import FIRST_LEVEL, load_level
+from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
@@ -267,3 +268,24 @@ def test_the_beams_keep_the_jumps_that_clear_a_spike_bed() -> None:
     solution = solve(spike_beds())
     assert solution.found and solution.own_budget
     assert solution.moves_tried < SPIKE_BED_MOVES, solution.moves_tried
+
+
+def test_level_steps_lead_to_the_cell_beside_fewer_steps() -> None:
+    # a ride of five cells, all 3 steps from the Exit, whose far end is beside a cell of 2
+    steps = {(col, 0): 3 for col in range(5)} | {(5, 0): 2, (6, 0): 1, (6, 1): 0}
+    distances = plateau_distances(steps)
+    assert [distances[(col, 0)] for col in range(7)] == [4, 3, 2, 1, 0, 0, 0]
+    assert distances.get((6, 1), 0) == 0  # the Exit's cell: nowhere to lean
+
+
+DUSK_RHYTHM_MOVES = 3_000  # its route is about 250 moves long
+
+
+def test_the_beams_ride_a_lift_up_and_a_ferry_along() -> None:
+    """Dusk Rhythm's lift and ferry are level steps (the reach proof joins a ride's cells
+    in one step); beside its lift, the beams kept jumps on the spot under it in place of
+    the ride up it, until widened (7,411 moves, and 11,379 while they also jumped onto
+    its spike beds)."""
+    solution = solve(load_level(LEVELS_DIR / "11-dusk-rhythm.tmx"))
+    assert solution.found and solution.own_budget
+    assert solution.moves_tried < DUSK_RHYTHM_MOVES, solution.moves_tried
