@@ -57,13 +57,15 @@ What it teaches: a **beam search** over a deterministic simulation.
 * **The score** is the number of steps from the player's cell to an Exit along the moves
   of the reach proof (:func:`game.checker.reachable.steps_to_exit`): it knows that a ledge
   too high must be climbed from elsewhere, and a state from which no step leads on to an
-  Exit (at the bottom of a pit) is dropped. The beams score a fall by where it lands: the
-  steps of the tile above the first floor straight below, if more than its own, or a
-  penalty if there is no floor below or spikes (Hazard tiles) lie on it. So standing at
-  the edge of a pit waiting for a platform is better than jumping into it, a jump that
-  comes down on a spike bed is not kept in place of one that clears it, and a jump on the
-  spot beside a lift is not kept in place of a ride up it (the reach proof's steps are the
-  same all along a ride).
+  Exit (at the bottom of a pit) is dropped. A fall with no floor straight below, or with
+  spikes (Hazard tiles) on the first floor below, counts more: a tile more for the
+  best-first search (Spike Gauntlet took 4,777 moves before, and takes about 2,100), and
+  :data:`PIT_PENALTY_TILES` for the beams, which score any other fall by where it lands:
+  the steps of the tile above that floor, if more than its own. So standing at the edge
+  of a pit waiting for a platform is better than jumping into it, a jump that comes down
+  on a spike bed is not kept in place of one that clears it, and a jump on the spot beside
+  a lift is not kept in place of a ride up it (the reach proof's steps are the same all
+  along a ride).
   Where the steps are level, as all along a moving platform's ride, the beams' score also
   leans, by less than a step, towards the nearest cell beside one of fewer steps
   (:func:`plateau_distances`): along a ferry's route to its far end, up a lift to its
@@ -156,8 +158,9 @@ DROP = CHOICES[-1]  # only tried while standing on a one-way floor
 STEER = frozenset({L, R})  # in the air, a move steers, or carries on as the one before did
 RUNS = (frozenset({R}), frozenset({L}))  # the moves that may run off an edge
 LAST_COYOTE_TICK = 2  # coyote ticks left before the tick on which a jump is the last one
-PIT_PENALTY_TILES = 6.0  # falling with no floor below (or spikes on it) costs as much as
-#                          this much distance
+PIT_PENALTY_TILES = 6.0  # beams: falling with no floor below (or spikes on it) costs as
+#                          much as this much distance
+BEST_FIRST_PIT_TILES = 1.0  # best first: the same fall puts a state off this many tiles
 STALL_MOVES = 60  # a beam that gets no closer for this many moves (plus a platform's
 #                   round trip) is stuck
 BACK_MOVES = 20  # a stuck beam goes back this many moves (doubling if stuck again) ...
@@ -389,23 +392,24 @@ class _Search:
             self.score() if self.goal_cells else UNREACHABLE, self.world.player.box, None)
 
     def score(self) -> float:
-        """How far the player still is from an Exit, in tiles (lower is better). The beams
-        (:attr:`beaming`) score a fall by where it lands, or as a fall into a pit, and lean
-        across level steps (:meth:`plateau_lean`)."""
-        world = self.world
+        """How far the player still is from an Exit, in tiles (lower is better). A fall with
+        no floor below, or spikes on it (:meth:`landing_cell`), counts
+        :data:`BEST_FIRST_PIT_TILES` more; the beams (:attr:`beaming`) count
+        :data:`PIT_PENALTY_TILES` more for it, score any other fall by where it lands, and
+        lean across level steps (:meth:`plateau_lean`)."""
         cell = self.cell()
         steps = self.steps.get(cell)
         if steps is None:
             return UNREACHABLE
+        player = self.world.player
+        landing = self.landing_cell() if not player.on_ground and player.vy > 0 else cell
         if not self.beaming:
-            return float(steps)
-        if not world.player.on_ground and world.player.vy > 0:
-            landing = self.landing_cell()
-            if landing is None:
-                return steps + PIT_PENALTY_TILES + self.plateau_lean(cell)
-            landed = self.steps.get(landing)
-            if landed is not None:
-                steps, cell = max(steps, landed), landing
+            return steps + (BEST_FIRST_PIT_TILES if landing is None else 0.0)
+        if landing is None:
+            return steps + PIT_PENALTY_TILES + self.plateau_lean(cell)
+        landed = self.steps.get(landing)
+        if landed is not None:
+            steps, cell = max(steps, landed), landing
         return steps + self.plateau_lean(cell)
 
     def landing_cell(self) -> tuple[int, int] | None:
