@@ -2,10 +2,13 @@
 a beam keeps one state a tile while others are left, a stuck beam goes back a few layers
 and widens instead of starting again from the spawn, the air beside a cliff is left for the
 stairs once crowded, a long maze of low corridors is solved by the best-first search
-with a few moves a tile, and an easy level by playing few of each state's moves."""
+with a few moves a tile, an easy level by playing few of each state's moves, the beams
+keep the jumps that clear a spike bed, and they lean along the level steps of a ride, and
+the best-first search puts off a fall onto spikes."""
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 from collections.abc import Iterator
 from typing import cast
@@ -23,17 +26,19 @@ from game.checker.solver import (
     Effort,
     Node,
     _Search,
+    plateau_distances,
     solve,
 )
 from game.collision.aabb import Box
-from game.levels import FIRST_LEVEL, load_level
+from game.collision.shapes import TileKind, TileShape
+from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
 from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
 from game.sim.snapshot import Snapshot
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
-from tests.maps import level_from_ascii, level_from_boxes
+from tests.maps import TILE, level_from_ascii, level_from_boxes
 from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, SPAWN, WIDTH, exit_on, ferry, gap
 
 
@@ -242,3 +247,62 @@ def test_an_easy_level_is_solved_playing_few_of_each_state_s_moves() -> None:
     solution = solve(load_level(FIRST_LEVEL))
     assert solution.found and solution.own_budget
     assert solution.moves_tried < EASY_LEVEL_MOVES, solution.moves_tried
+
+
+SPIKE_BEDS = 5  # beds two spikes wide, on the way to the Exit
+SPIKE_BED_MOVES = 1_500  # the route is about 95 moves long
+
+
+def spike_beds() -> Level:
+    """Short spike beds (the shipped spikes: 14x8 px at the foot of their cell) on a flat
+    floor, and a moving platform in a far corner, so the beams search first."""
+    row = "P" + "      ^^" * SPIKE_BEDS + "      D  "
+    level = level_from_ascii(["", "", "", "", row.replace("^", " "), "#" * len(row)])
+    for col, char in enumerate(row):
+        if char == "^":
+            level.grid.put(col, 4, TileShape(Box(col * TILE + 1, 4 * TILE + 8, 14, 8),
+                                             TileKind.HAZARD, col, 4))
+    corner = PlatformSpec(Route(((0.0, 0.0), (32.0, 0.0))), 16.0, 8.0, 20.0)
+    return dataclasses.replace(level, platforms=(corner,))
+
+
+def test_the_beams_keep_the_jumps_that_clear_a_spike_bed() -> None:
+    """A jump that comes down on spikes scores as a fall into a pit: scored by its tile
+    alone, the jumps that went furthest before landing on the spikes filled the beam, and
+    every life was lost (5,876 moves)."""
+    solution = solve(spike_beds())
+    assert solution.found and solution.own_budget
+    assert solution.moves_tried < SPIKE_BED_MOVES, solution.moves_tried
+
+
+def test_level_steps_lead_to_the_cell_beside_fewer_steps() -> None:
+    # a ride of five cells, all 3 steps from the Exit, whose far end is beside a cell of 2
+    steps = {(col, 0): 3 for col in range(5)} | {(5, 0): 2, (6, 0): 1, (6, 1): 0}
+    distances = plateau_distances(steps)
+    assert [distances[(col, 0)] for col in range(7)] == [4, 3, 2, 1, 0, 0, 0]
+    assert distances.get((6, 1), 0) == 0  # the Exit's cell: nowhere to lean
+
+
+DUSK_RHYTHM_MOVES = 3_000  # its route is about 250 moves long
+
+
+def test_the_beams_ride_a_lift_up_and_a_ferry_along() -> None:
+    """Dusk Rhythm's lift and ferry are level steps (the reach proof joins a ride's cells
+    in one step); beside its lift, the beams kept jumps on the spot under it in place of
+    the ride up it, until widened (7,411 moves, and 11,379 while they also jumped onto
+    its spike beds)."""
+    solution = solve(load_level(LEVELS_DIR / "11-dusk-rhythm.tmx"))
+    assert solution.found and solution.own_budget
+    assert solution.moves_tried < DUSK_RHYTHM_MOVES, solution.moves_tried
+
+
+SPIKE_GAUNTLET_MOVES = 3_000  # its route is about 190 moves long
+
+
+def test_the_best_first_search_puts_off_a_fall_onto_spikes() -> None:
+    """Spike Gauntlet's spike beds, scored by the tiles alone: every jump over a bed, and
+    every steer in the air, looked as close as the one that clears it, and the best-first
+    search tried them all (4,777 moves)."""
+    solution = solve(load_level(LEVELS_DIR / "05-spike-gauntlet.tmx"))
+    assert solution.found and solution.own_budget
+    assert solution.moves_tried < SPIKE_GAUNTLET_MOVES, solution.moves_tried
