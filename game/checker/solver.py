@@ -18,8 +18,8 @@ What it teaches: a **beam search** over a deterministic simulation.
 * **A macro-action for the widest jumps.** When a run goes off an edge, the best-first
   search (below) also tries the same run with jump pressed on the last tick coyote time
   allows, which a move every 6 ticks would rarely hit: that is how the widest gaps are
-  crossed. The beams keep to the plain moves: in them, the late jumps made The Summit take
-  twice the moves.
+  crossed. The beams keep to the plain moves: with the late jumps, the five levels with
+  moving platforms took 22,641 moves instead of 19,358 (Ferry Lines 8,947 instead of 5,004).
 * **Two macro-actions: waits.** On a level with moving platforms, a player on the ground
   near a platform's route may also let go of the keys and stand for :data:`WAIT_TICKS`
   ticks in one move, or stand until a platform comes within :data:`COMES_PX` (worked out
