@@ -36,6 +36,15 @@ def pytest_collection_finish(session: pytest.Session) -> None:
     gc.freeze()
 
 
+@pytest.hookimpl(trylast=True)  # after the module's fixtures are torn down
+def pytest_runtest_teardown(item: pytest.Item, nextitem: pytest.Item | None) -> None:
+    """After a module's last test, the same for what its tests left alive (the caches that
+    serve later modules too, such as the campaign's play and the shipped levels' fills)."""
+    if nextitem is None or getattr(nextitem, "module", None) is not getattr(item, "module", None):
+        gc.collect()
+        gc.freeze()
+
+
 @pytest.fixture(scope="module")
 def assets() -> Iterator[Assets]:
     """The game's pictures, loaded on a 320x180 display that closes after the module."""
