@@ -21,6 +21,7 @@ dependency, it only hides it.
 from __future__ import annotations
 
 import ast
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -36,12 +37,30 @@ def module_name(path: Path) -> str:
     return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
 
 
+# The fields that hold a block of statements (an ``except`` clause's and a ``case``'s own
+# block sit one level down): an ``import`` is a statement, found only in these.
+BLOCKS = ("body", "orelse", "finalbody", "handlers", "cases")
+
+
+def statements(module: ast.Module) -> Iterator[ast.AST]:
+    """Every statement of the module, however deeply nested in functions, classes and
+    blocks; the expressions inside them, which hold no ``import``, are not walked."""
+    todo: list[ast.AST] = [module]
+    while todo:
+        node = todo.pop()
+        yield node
+        for field in BLOCKS:
+            block = getattr(node, field, None)
+            if isinstance(block, list):
+                todo.extend(block)
+
+
 def imports_of(path: Path) -> set[str]:
     """Every ``game`` module this file imports, anywhere in it, resolved to a module name."""
     here = module_name(path)
     package = here if path.name == "__init__.py" else here.rpartition(".")[0]
     found: set[str] = set()
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+    for node in statements(ast.parse(path.read_text(encoding="utf-8"))):
         if isinstance(node, ast.Import):
             found.update(a.name for a in node.names if a.name.split(".")[0] == "game")
         elif isinstance(node, ast.ImportFrom):
