@@ -3,10 +3,8 @@ alone, and small builders for levels."""
 
 from __future__ import annotations
 
-import compileall
 import gc
 import os
-from pathlib import Path
 
 os.environ["SDL_VIDEODRIVER"] = "dummy"
 os.environ["SDL_AUDIODRIVER"] = "dummy"
@@ -17,13 +15,7 @@ from collections.abc import Iterator
 import pygame
 import pytest
 
-# The game's modules compiled once, before anything imports them: this run and every program
-# a test starts read the same bytecode, where each would compile the modules it imports
-# again when Python is told to write no bytecode (PYTHONDONTWRITEBYTECODE). Only files
-# older than their source are compiled; __pycache__ is not committed.
-compileall.compile_dir(Path(__file__).resolve().parent.parent / "game", quiet=1)
-
-from game.app.assets import Assets, load_assets  # noqa: E402  (once the bytecode is there)
+from game.app.assets import Assets, load_assets
 
 
 def pytest_collection_finish(session: pytest.Session) -> None:
