@@ -306,3 +306,16 @@ def test_the_best_first_search_puts_off_a_fall_onto_spikes() -> None:
     solution = solve(load_level(LEVELS_DIR / "05-spike-gauntlet.tmx"))
     assert solution.found and solution.own_budget
     assert solution.moves_tried < SPIKE_GAUNTLET_MOVES, solution.moves_tried
+
+
+LAST_PEAK_MOVES = 6_800  # its route is about 550 moves long
+
+
+@pytest.mark.slow
+def test_a_jump_under_a_lift_does_not_narrow_the_beams_again() -> None:
+    """A beam widened at The Last Peak's lift narrows again only once a state on the ground
+    comes closer than any before: narrowing each time a jump under the lift rose nearer
+    its top, the beams took 6,811 moves."""
+    solution = solve(load_level(LEVELS_DIR / "12-the-last-peak.tmx"))
+    assert solution.found and solution.own_budget
+    assert solution.moves_tried < LAST_PEAK_MOVES, solution.moves_tried
