@@ -43,6 +43,7 @@ from game.sim.tuning import Tuning
 from game.sim.world import World
 from tests.in_process import call_main
 from tests.shipped_fills import share_fills
+from tests.shipped_solves import solved
 
 ROOT = Path(__file__).resolve().parent.parent
 SCRIPTS = Path(__file__).resolve().parent / "scripts"
@@ -134,7 +135,7 @@ def test_the_solver_solves_every_shipped_level_within_the_default_budget(level: 
     the timed inputs of the second stage, so checking them costs what it did. A route found
     is a route the game replays: :func:`solve` replays it from the spawn before it says so
     (``test_a_route_that_does_not_replay_is_never_called_found`` breaks that replay)."""
-    solution = solve(load_level(level))
+    solution = solved(level)  # one solving, shared with tests/test_solver_search.py
     assert solution.found and solution.own_budget
     assert solution.moves_tried < solution.budget * PLAIN_SHARE
     assert len(solution.route) == solution.exit_tick - 1  # the replay's place after each tick

@@ -31,7 +31,7 @@ from game.checker.solver import (
 )
 from game.collision.aabb import Box
 from game.collision.shapes import TileKind, TileShape
-from game.levels import FIRST_LEVEL, LEVELS_DIR, load_level
+from game.levels import FIRST_LEVEL
 from game.sim.inputs import Action
 from game.sim.level import Level
 from game.sim.platforms import PlatformSpec, Route
@@ -39,6 +39,7 @@ from game.sim.snapshot import Snapshot
 from game.sim.tuning import Tuning
 from game.sim.world import EventKind, World
 from tests.maps import TILE, level_from_ascii, level_from_boxes
+from tests.shipped_solves import solved, solved_shipped
 from tests.test_verdicts import COLS, EDGE, FLOOR, ROWS, SPAWN, WIDTH, exit_on, ferry, gap
 
 
@@ -244,7 +245,7 @@ def test_an_easy_level_is_solved_playing_few_of_each_state_s_moves() -> None:
     """The best-first search plays a state's next move only when nothing played since came
     closer: playing all seven moves of every state it carried on from, it took 2,510 moves
     to solve First Steps."""
-    solution = solve(load_level(FIRST_LEVEL))
+    solution = solved(FIRST_LEVEL)
     assert solution.found and solution.own_budget
     assert solution.moves_tried < EASY_LEVEL_MOVES, solution.moves_tried
 
@@ -291,7 +292,7 @@ def test_the_beams_ride_a_lift_up_and_a_ferry_along() -> None:
     in one step); beside its lift, the beams kept jumps on the spot under it in place of
     the ride up it, until widened (7,411 moves, and 11,379 while they also jumped onto
     its spike beds)."""
-    solution = solve(load_level(LEVELS_DIR / "11-dusk-rhythm.tmx"))
+    solution = solved_shipped("11-dusk-rhythm")
     assert solution.found and solution.own_budget
     assert solution.moves_tried < DUSK_RHYTHM_MOVES, solution.moves_tried
 
@@ -303,7 +304,7 @@ def test_the_best_first_search_puts_off_a_fall_onto_spikes() -> None:
     """Spike Gauntlet's spike beds, scored by the tiles alone: every jump over a bed, and
     every steer in the air, looked as close as the one that clears it, and the best-first
     search tried them all (4,777 moves)."""
-    solution = solve(load_level(LEVELS_DIR / "05-spike-gauntlet.tmx"))
+    solution = solved_shipped("05-spike-gauntlet")
     assert solution.found and solution.own_budget
     assert solution.moves_tried < SPIKE_GAUNTLET_MOVES, solution.moves_tried
 
@@ -316,6 +317,6 @@ def test_a_jump_under_a_lift_does_not_narrow_the_beams_again() -> None:
     """A beam widened at The Last Peak's lift narrows again only once a state on the ground
     comes closer than any before: narrowing each time a jump under the lift rose nearer
     its top, the beams took 6,811 moves."""
-    solution = solve(load_level(LEVELS_DIR / "12-the-last-peak.tmx"))
+    solution = solved_shipped("12-the-last-peak")
     assert solution.found and solution.own_budget
     assert solution.moves_tried < LAST_PEAK_MOVES, solution.moves_tried
