@@ -515,8 +515,9 @@ class _Search:
         for search, turn_ends in schedule:
             if search not in stages or self.past_deadline():
                 continue
-            if self not in stages:  # the plain moves are over: the rest is the timed inputs'
-                timed.limit = self.budget - self.moves_tried
+            other = timed if search is self else self
+            if other not in stages:  # the other is over: the rest of the budget is this one's
+                search.limit = self.budget - other.moves_tried
             search.turn_ends = turn_ends
             try:
                 next(stages[search])
