@@ -21,7 +21,6 @@ from game.checker.solver import (
     COMES_PX,
     LAST_COYOTE_TICK,
     MOVE_TICKS,
-    PLAIN_SHARE,
     UNTIL_A_PLATFORM_COMES,
     Effort,
     Node,
@@ -191,11 +190,13 @@ STAIRS_BESIDE_A_CLIFF = [
 def test_the_air_beside_a_cliff_is_left_for_the_stairs_once_it_is_crowded() -> None:
     """Every jump from the stairs into the air beside the cliff is a state of its own, and
     their tiles are nearer the Exit by the steps than the stair that leads on: scored by
-    the steps alone, the best-first search tried them until the budget ran out."""
+    the steps alone, the best-first search tried them until the budget ran out. Found by
+    the plain moves, within their share of the budget (after the timed inputs' first turn:
+    the plain moves take more than their first turn here)."""
     level = level_from_ascii(STAIRS_BESIDE_A_CLIFF)
     solution = solve(level)
     assert solution.found and solution.own_budget, solution.moves_tried
-    assert solution.moves_tried < solution.budget * PLAIN_SHARE
+    assert not solution.timed  # the plain moves found it, within PLAIN_SHARE of the budget
 
 
 MAZE_CORRIDORS = 10  # corridors two tiles high, each run from one end to the other

@@ -9,11 +9,11 @@ few for a long maze and far too many for a small map the search cannot decide: e
 gets :data:`MOVES_PER_CELL` moves for each cell its route may pass through (the cells the
 reach proof's fill reached, or else the open cells), at least :data:`MIN_BUDGET` and at
 most :data:`MAX_BUDGET`. The budget counts moves, never seconds, so every machine gives
-the same verdict. Each shipped level is solved within the plain moves' share of its budget
-(:data:`~game.checker.solver.PLAIN_SHARE`: 24 moves a reached cell; a test keeps it so); a
-maze of corridors needs more than its route's tiles, as the search also walks the corridors
-that lead nowhere (a serpentine of low corridors, with none, takes about 6 moves a tile;
-``tests/test_solver_search.py`` keeps it under 14).
+the same verdict. Each shipped level is solved within the plain moves' first turn of its
+budget (:data:`~game.checker.solver.FIRST_PLAIN_SHARE`: 8 moves a reached cell; a test
+keeps it so); a maze of corridors needs more than its route's tiles, as the search also
+walks the corridors that lead nowhere (a serpentine of low corridors, with none, takes
+about 6 moves a tile; ``tests/test_solver_search.py`` keeps it under 14).
 """
 
 from __future__ import annotations

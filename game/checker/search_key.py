@@ -60,7 +60,7 @@ def state_key(world: World, held: Actions, routes: list[Box],
               place_px: float = SAME_PLACE_PX) -> StateKey:
     """The key of ``world``'s state after a move that held ``held`` (holding jump matters: a
     new jump needs a fresh press). ``routes``: each platform's :func:`route_box`;
-    ``place_px``: how close two places must be to count as one (the solver's second stage,
+    ``place_px``: how close two places must be to count as one (the solver's timed stage,
     which times its inputs to the tick, tells apart places :data:`FINE_PLACE_PX` apart)."""
     player = world.player
     box = player.box

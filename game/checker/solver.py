@@ -26,17 +26,28 @@ What it teaches: a **beam search** over a deterministic simulation.
   from the platforms' routes alone, since they go their ways whatever the player does), so
   a beam waiting for a ferry pays for one child instead of seven every 6 ticks. A wait
   counts as the moves its ticks would take, so the budget still measures the work done.
-* **Two stages: plain moves, then timed inputs.** The moves above, held 6 ticks each, may
-  spend :data:`PLAIN_SHARE` of the budget (every shipped level is solved there). If they
-  find no route, the search starts again from the spawn and also tries inputs timed to the
-  tick (:meth:`_Search.timed_children`): on the ground near an edge, jump pressed on each
-  tick from :data:`EARLY_TICKS` before the run leaves the ground to the last coyote tick,
-  held for each number of ticks of the rise; in the air just before landing, jump pressed
-  so the jump buffer makes it leave on the first tick on the ground. This stage tells
-  apart places :data:`~game.checker.search_key.FINE_PLACE_PX` apart.
+* **Two stages, taking turns: plain moves and timed inputs.** The moves above, held 6
+  ticks each, may spend :data:`PLAIN_SHARE` of the budget. A second search, from the spawn,
+  spends the rest, and also tries inputs timed to the tick
+  (:meth:`_Search.timed_children`): on the ground near an edge, jump pressed on each tick
+  from :data:`EARLY_TICKS` before the run leaves the ground to the last coyote tick, held
+  for each number of ticks of the rise; in the air just before landing, jump pressed so
+  the jump buffer makes it leave on the first tick on the ground. This stage tells apart
+  places :data:`~game.checker.search_key.FINE_PLACE_PX` apart.
+  The two take turns (:meth:`_Search.turns`): the plain moves for the first
+  :data:`FIRST_PLAIN_SHARE` of the budget (every shipped level is solved there, The Last
+  Peak in under a sixth of its budget), then the timed inputs for :data:`FIRST_TIMED_SHARE`,
+  then the rest of the plain moves' share, then the rest of the budget; a stage carries on
+  where its last turn ended, at the first state or layer past its share. So a map whose
+  only route needs a jump timed to the tick does not wait for the plain moves' whole
+  share: the five in ``tests/test_timed_inputs.py`` took 6,389 to 7,408 moves of their
+  9,000 or 10,680 when the timed inputs came only after it, and take 2,789 to 3,709. A
+  map whose plain route takes more than the first turn pays for the timed inputs' turn
+  before it: stairs beside a cliff (``tests/test_solver_search.py``) took 5,429 moves of
+  its 9,960, and takes 9,418.
 * **Lining a run up.** On the ground the run's speed changes in steps of half a pixel a
   tick, so from a spawn at a whole pixel every run's last tick on the ground falls on the
-  same few places, and the widest gap may need another. The second stage also tries, once
+  same few places, and the widest gap may need another. The timed stage also tries, once
   for each edge, a small hop before the run that changes the speed in the air (in finer
   steps), measures where each hop's run leaves the ground, and tries the edge's jumps from
   where the one furthest forward lands (:meth:`_Search.line_up`).
@@ -127,10 +138,10 @@ import heapq
 import math
 import time
 from collections import deque
-from collections.abc import Iterator, Sequence
+from collections.abc import Generator, Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import NamedTuple
+from typing import NamedTuple, cast
 
 from game.checker.enemy_timeline import Away, EnemyTimeline
 from game.checker.reachable import steps_to_exit
@@ -181,7 +192,9 @@ TRY_ORDER: tuple[Actions, ...] = (  # ... rightwards first, each run before its 
     frozenset({J}), frozenset(), frozenset({D, J}))
 GREEDY_SHARE = 0.5  # of a stage's moves, the best-first search may try at least this share
 FEET_PX = 0.5  # the search scores the cell just above the middle of the feet
-PLAIN_SHARE = 0.6  # of a map's budget, what the plain moves may spend before timed inputs
+PLAIN_SHARE = 0.6  # of a map's budget, what the plain moves may spend in all
+FIRST_PLAIN_SHARE = 0.2  # of a map's budget, the plain moves' first turn ...
+FIRST_TIMED_SHARE = 1 / 3  # ... then the timed inputs' first turn, then each stage's rest
 EARLY_TICKS = 16  # an edge's jumps are pressed from this many ticks before the run leaves it
 EDGE_LOOK_PX = 48.0  # the edge's jumps are tried from the first state this close to an edge
 MAX_RUN_TICKS = 60  # the run to an edge is given up after this many ticks
@@ -262,6 +275,7 @@ class Solution:
     budget: int = 0  # the moves it might have tried: ``--budget N``, or the map's own
     states: int = 0  # distinct states the search kept
     own_budget: bool = True  # the budget is the map's own (no ``--budget N`` given)
+    timed: bool = False  # the route was found by the stage with inputs timed to the tick
 
     @property
     def out_of_budget(self) -> bool:
@@ -352,7 +366,8 @@ class _Search:
     """One level's search state: the world it steps, the score and what it has seen."""
 
     def __init__(self, level: Level, effort: Effort,
-                 steps: dict[tuple[int, int], int] | None = None) -> None:
+                 steps: dict[tuple[int, int], int] | None = None, timed: bool = False,
+                 ) -> None:
         self.level = level
         self.effort = effort
         self.world = World(level)
@@ -373,7 +388,10 @@ class _Search:
         self.budget = (effort.budget if effort.budget is not None
                        else map_budget(len(self.steps)))
         self.limit = self.budget  # the moves this stage of the search may reach (run())
-        self.timed = False  # the second stage: timed inputs are tried too
+        self.turn_ends: float = math.inf  # ... and those it may reach before it pauses
+        self.timed = timed  # the stage with timed inputs: they are tried too
+        self.timed_stage: _Search | None = None  # run() makes it, for the plain stage
+        self.found_timed = False  # run() found its route in the timed stage
         # (edge cell, direction, place within a tick's run) of each edge's jumps tried
         self.edges_tried: set[tuple[tuple[int, int], int, int]] = set()
         # (edge cell, direction) of each run to an edge lined up (line_up())
@@ -479,30 +497,59 @@ class _Search:
         return self.deadline is not None and time.monotonic() > self.deadline
 
     def run(self) -> Node | None:
-        """The plain moves first, within :data:`PLAIN_SHARE` of the budget; then, if they
-        found no route, the search again from the spawn with timed inputs too
-        (:meth:`timed_children`), until a route is found or the budget is spent."""
+        """Both stages, taking turns (:meth:`turns`), until one finds a route or the budget
+        is spent; :attr:`timed_stage` keeps the stage with timed inputs and its work."""
+        timed = _Search(self.level, self.effort, self.steps, timed=True)
+        timed.deadline, self.timed_stage = self.deadline, timed
         self.limit = max(1, math.floor(self.budget * PLAIN_SHARE))
-        found = self.stage()
-        if found is not None or self.past_deadline():
-            return found
-        self.timed, self.limit, self.waits = True, self.budget, {}
-        return self.stage()
+        timed.limit = self.budget - self.limit
+        return self.turns(timed)
 
-    def stage(self) -> Node | None:
+    def turns(self, timed: _Search) -> Node | None:
+        """The plain moves (this search) for :data:`FIRST_PLAIN_SHARE` of the budget, then
+        the timed inputs (``timed``, a search of its own from the spawn) for
+        :data:`FIRST_TIMED_SHARE`, then the rest of the plain moves' :data:`PLAIN_SHARE`,
+        then the rest of the budget for the timed inputs. A stage that pauses carries on
+        where it was (:meth:`paused`); one that ends early leaves its moves to the other."""
+        stages = {self: self.stage(), timed: timed.stage()}
+        schedule = ((self, math.floor(self.budget * FIRST_PLAIN_SHARE)),
+                    (timed, math.floor(self.budget * FIRST_TIMED_SHARE)),
+                    (self, math.inf), (timed, math.inf))
+        for search, turn_ends in schedule:
+            if search not in stages or self.past_deadline():
+                continue
+            other = timed if search is self else self
+            if other not in stages:  # the other is over: the rest of the budget is this one's
+                search.limit = self.budget - other.moves_tried
+            search.turn_ends = turn_ends
+            try:
+                next(stages[search])
+            except StopIteration as over:
+                del stages[search]
+                if over.value is not None:
+                    self.found_timed = search is timed
+                    return cast(Node, over.value)
+        return None
+
+    def paused(self) -> bool:
+        """This stage's turn is over (:meth:`turns`), though its own moves are not."""
+        return self.moves_tried >= self.turn_ends and not self.out_of_time()
+
+    def stage(self) -> Generator[None, None, Node | None]:
         """Best first (on a level without moving platforms), then beams that widen where
-        they are stuck, until a route is found or this stage's share is spent."""
+        they are stuck, until a route is found or this stage's share is spent; it yields
+        where its turn is over (:meth:`paused`), and carries on from there."""
         # Waiting never looks better to a best-first search: on a level with moving
-        # platforms, only the second stage searches best first, for half its share (a beam
-        # drops a timed jump while it is over a pit, as it drops every fall)
+        # platforms, only the timed inputs' stage searches best first, for half its share
+        # (a beam drops a timed jump while it is over a pit, as it drops every fall)
         if not self.world.platforms or self.timed:
             share = self.limit - self.moves_tried
             greedy = max(self.effort.greedy_moves, math.floor(share * GREEDY_SHARE))
-            found = self.best_first(self.moves_tried + min(
+            found = yield from self.best_first(self.moves_tried + min(
                 greedy, share // 2 if self.world.platforms else share))
             if found is not None or self.out_of_time():
                 return found
-        return self.beams()
+        return (yield from self.beams())
 
     def choices_here(self, node: Node | None, ticks: int) -> list[Try]:
         """The moves worth trying from the state the world is in (reached by ``node`` at
@@ -608,7 +655,7 @@ class _Search:
     def timed_children(self, snapshot: Snapshot, node: Node | None, ticks: int,
                        seen: dict[StateKey, int], layer: int,
                        ) -> Iterator[tuple[float, Snapshot, Node]]:
-        """The timed inputs, tried in the search's second stage where they matter: on the
+        """The timed inputs, tried in the search's timed stage where they matter: on the
         ground near an edge, jumps pressed on each tick of the run to it and of coyote time
         after it, each held for each number of ticks of the rise (:meth:`edge_jumps`), and
         the same after a small hop that lines the run up (:meth:`line_up`); in the air just
@@ -913,7 +960,7 @@ class _Search:
         after_the_run = Snapshot.of(self.world)
         return ran, self.try_move(after_the_run, ran.ticks, run | {J})
 
-    def best_first(self, max_moves: int) -> Node | None:
+    def best_first(self, max_moves: int) -> Generator[None, None, Node | None]:
         """Always carry on from the state closest to an Exit, counting time a little
         (weighted A*): quick on levels that need no waiting. Closest counts the place
         within the tile (:meth:`within_tile`) and the states kept in the tile before
@@ -925,7 +972,7 @@ class _Search:
         out; the state it reaches goes in with its own priority. So a move that gets closer
         is carried on at once, and a state's next move is played only when nothing played
         since came closer. A run that went off an edge puts in its jump on the last coyote
-        tick, behind the state's other moves. In the second stage a state's timed inputs
+        tick, behind the state's other moves. In the timed stage a state's timed inputs
         (:meth:`timed_children`) are all tried when the state comes out."""
         grid, tuning = self.level.grid, self.world.tuning
         tiles_per_tick = tuning.run_speed_px_s * tuning.tick_s / grid.tile_w
@@ -951,6 +998,8 @@ class _Search:
         self.start.restore(self.world)
         queue.append((0.0, 0, self.start, None, None, self.choices_here(None, 0)))
         while queue and self.moves_tried < max_moves:
+            while self.paused():
+                yield
             priority, _, snapshot, node, trying, choices = heapq.heappop(queue)
             ticks = node.ticks if node is not None else 0
             if trying is None:  # a state comes out: its moves go in, to be tried one by one
@@ -992,7 +1041,7 @@ class _Search:
                 return None
         return None
 
-    def beams(self) -> Node | None:
+    def beams(self) -> Generator[None, None, Node | None]:
         """Beam search that widens where it is stuck and narrows again once past: when the
         beam dies out, or gets no closer for a while, it goes back :data:`BACK_MOVES` layers
         and carries on from there twice as wide (going back twice as far each time it fails
@@ -1007,6 +1056,8 @@ class _Search:
         closest, since_closer = UNREACHABLE, 0
         started_at, dropped = 0, False
         while not self.out_of_time():
+            while self.paused():
+                yield
             depth = len(layers) - 1
             beam = layers[depth]
             assert beam is not None  # the newest layer is always kept
@@ -1175,17 +1226,22 @@ def solve(level: Level, effort: Effort | None = None,
     none, so the score is the open cells' :func:`distances_to_exit`)."""
     search = _Search(level, effort or Effort(), steps)
     found = search.run() if level.exits else None
+    stages = [search] if search.timed_stage is None else [search, search.timed_stage]
+    moves_tried = sum(stage.moves_tried for stage in stages)
+    states = sum(stage.states for stage in stages)
     held = _held_per_tick(found)
     if found is not None:
         won, route = replay(level.path, held, level)
         if not won:  # the search and a replay disagree: the snapshot missed some state
             raise AssertionError(f"{level.path}: the route found does not replay")
-        return Solution(level, True, held, route[-1], route, search.moves_tried,
-                        budget=search.budget, states=search.states,
-                        own_budget=search.effort.budget is None)
-    furthest_held = _held_per_tick(search.best[2])
+        return Solution(level, True, held, route[-1], route, moves_tried,
+                        budget=search.budget, states=states,
+                        own_budget=search.effort.budget is None,
+                        timed=search.found_timed)
+    best = min((stage.best for stage in stages), key=lambda best: best[0])
+    furthest_held = _held_per_tick(best[2])
     _, route = replay(level.path, furthest_held, level)
     timed_out = search.deadline is not None and time.monotonic() > search.deadline
-    return Solution(level, False, furthest_held, search.best[1], route, search.moves_tried,
-                    timed_out=timed_out, budget=search.budget, states=search.states,
+    return Solution(level, False, furthest_held, best[1], route, moves_tried,
+                    timed_out=timed_out, budget=search.budget, states=states,
                     own_budget=search.effort.budget is None)
