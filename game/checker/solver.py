@@ -390,7 +390,7 @@ class _Search:
         self.limit = self.budget  # the moves this stage of the search may reach (run())
         self.turn_ends: float = math.inf  # ... and those it may reach before it pauses
         self.timed = timed  # the stage with timed inputs: they are tried too
-        self.timed_stage: _Search | None = None  # run() makes it, for the plain stage
+        self.timed_stage: _Search | None = None  # turns() makes it, for the plain stage
         self.found_timed = False  # run() found its route in the timed stage
         # (edge cell, direction, place within a tick's run) of each edge's jumps tried
         self.edges_tried: set[tuple[tuple[int, int], int, int]] = set()
@@ -498,36 +498,43 @@ class _Search:
 
     def run(self) -> Node | None:
         """Both stages, taking turns (:meth:`turns`), until one finds a route or the budget
-        is spent; :attr:`timed_stage` keeps the stage with timed inputs and its work."""
-        timed = _Search(self.level, self.effort, self.steps, timed=True)
-        timed.deadline, self.timed_stage = self.deadline, timed
+        is spent; :attr:`timed_stage` keeps the stage with timed inputs and its work, once
+        it has had a turn."""
         self.limit = max(1, math.floor(self.budget * PLAIN_SHARE))
-        timed.limit = self.budget - self.limit
-        return self.turns(timed)
+        return self.turns()
 
-    def turns(self, timed: _Search) -> Node | None:
+    def turns(self) -> Node | None:
         """The plain moves (this search) for :data:`FIRST_PLAIN_SHARE` of the budget, then
-        the timed inputs (``timed``, a search of its own from the spawn) for
-        :data:`FIRST_TIMED_SHARE`, then the rest of the plain moves' :data:`PLAIN_SHARE`,
-        then the rest of the budget for the timed inputs. A stage that pauses carries on
-        where it was (:meth:`paused`); one that ends early leaves its moves to the other."""
-        stages = {self: self.stage(), timed: timed.stage()}
-        schedule = ((self, math.floor(self.budget * FIRST_PLAIN_SHARE)),
-                    (timed, math.floor(self.budget * FIRST_TIMED_SHARE)),
-                    (self, math.inf), (timed, math.inf))
-        for search, turn_ends in schedule:
-            if search not in stages or self.past_deadline():
+        the timed inputs (:attr:`timed_stage`, a search of its own from the spawn, made at
+        its first turn: most maps never get there) for :data:`FIRST_TIMED_SHARE`, then the
+        rest of the plain moves' :data:`PLAIN_SHARE`, then the rest of the budget for the
+        timed inputs. A stage that pauses carries on where it was (:meth:`paused`); one
+        that ends early leaves its moves to the other."""
+        stages = {self: self.stage()}
+        schedule = ((False, math.floor(self.budget * FIRST_PLAIN_SHARE)),
+                    (True, math.floor(self.budget * FIRST_TIMED_SHARE)),
+                    (False, math.inf), (True, math.inf))
+        for timed_turn, turn_ends in schedule:
+            if self.past_deadline():
+                break
+            if timed_turn and self.timed_stage is None:
+                timed = self.timed_stage = _Search(self.level, self.effort, self.steps,
+                                                   timed=True)
+                timed.deadline, timed.limit = self.deadline, self.budget - self.limit
+                stages[timed] = timed.stage()
+            search, other = ((self.timed_stage, self) if timed_turn
+                             else (self, self.timed_stage))
+            if search is None or search not in stages:
                 continue
-            other = timed if search is self else self
-            if other not in stages:  # the other is over: the rest of the budget is this one's
-                search.limit = self.budget - other.moves_tried
+            if other is not None and other not in stages:  # the other is over: the rest
+                search.limit = self.budget - other.moves_tried  # of the budget is this one's
             search.turn_ends = turn_ends
             try:
                 next(stages[search])
             except StopIteration as over:
                 del stages[search]
                 if over.value is not None:
-                    self.found_timed = search is timed
+                    self.found_timed = timed_turn
                     return cast(Node, over.value)
         return None
 
