@@ -153,8 +153,9 @@ def fills_shared(monkeypatch: pytest.MonkeyPatch) -> list[Path]:
 
 
 def test_check_accepts_a_committed_winning_script_as_proof(fills_shared: list[Path]) -> None:
-    """On one level: every committed script wins its level alone within the proof's grace,
-    as ``check --proof`` plays it, in the campaign's run (``tests/test_levels.py``)."""
+    """The ``--proof`` path, on one shipped level; that every committed script wins its
+    level within the proof's grace, from a fresh world as ``--proof`` plays it, the
+    campaign's run shows (``tests/test_levels.py``)."""
     level = LEVELS_DIR / "05-spike-gauntlet.tmx"  # the shortest script
     report = check_map(level, Options(proof=SCRIPTS / f"{level.stem}.txt"))
     assert report.verdict is Kind.SOLVED and not report.bad, report.findings
