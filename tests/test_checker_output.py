@@ -14,6 +14,7 @@ import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
+from types import FrameType
 from typing import IO
 
 import pygame
@@ -113,14 +114,36 @@ def test_a_firstgid_of_5000_digits_is_out_of_range_in_a_sentence(tmp_path: Path)
     assert "(5,000 characters), not a whole number from 1 to" in line
 
 
-def test_a_folder_1200_levels_deep_is_walked_without_recursion(tmp_path: Path) -> None:
+FOLDER_DEPTH = 300  # folders, one in the other, for the walk below
+FRAMES_LEFT = 150  # Python frames the check may add to the test's (a shallow map needs 30)
+
+
+def frames_in_use() -> int:
+    """How many Python frames are on the stack now, this function's own included."""
+    frame: FrameType | None = sys._getframe()
+    frames = 0
+    while frame is not None:
+        frame, frames = frame.f_back, frames + 1
+    return frames
+
+
+def test_a_folder_deeper_than_the_recursion_limit_is_walked_without_recursion(
+        tmp_path: Path) -> None:
+    """The check may recurse ``FRAMES_LEFT`` frames deeper than the test, half the folders'
+    depth: a walk (or a path's resolving) that took a frame for each folder would fail, as
+    it would at 1,000 folders with Python's own limit, and the walk costs a sixteenth."""
     deepest = tmp_path
-    for _ in range(1_200):  # os.makedirs would itself recurse
+    for _ in range(FOLDER_DEPTH):  # os.makedirs would itself recurse
         deepest = deepest / "a"
         deepest.mkdir()
     write_tmx(deepest, ["P   D", "#####"])
+    limit = sys.getrecursionlimit()
     try:
-        ran = checker(tmp_path, "--no-solve")
+        sys.setrecursionlimit(frames_in_use() + FRAMES_LEFT)
+        try:
+            ran = checker(tmp_path, "--no-solve")
+        finally:
+            sys.setrecursionlimit(limit)
         assert ran.returncode == 0 and ran.stdout.startswith("checked 1 map(s): all playable")
     finally:
         while deepest != tmp_path:  # shutil.rmtree recurses too

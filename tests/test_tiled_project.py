@@ -27,6 +27,7 @@ from game.levels.project import (
 )
 from game.sim.tuning import Tuning
 from tests.in_process import call_main
+from tests.maps import write_tmx
 
 TILED = shutil.which("tiled")
 
@@ -151,10 +152,18 @@ def copied_project(tmp_path: Path) -> Path:
     return folder
 
 
+def small_map(project: Path) -> Path:
+    """A map in a folder of the project whose only route jumps a block: checked and solved
+    in a moment, with the default physics, whose reach the checker knows already (the
+    shipped maps are checked in tests/test_levels.py, and solved in tests/test_solver.py)."""
+    return write_tmx(project / "levels" / "showcase", ["        ", "P   #  D", "########"],
+                     name="hop over.tmx")
+
+
 def test_the_check_command_works_from_a_folder_with_spaces(tmp_path: Path) -> None:
     folder = copied_project(tmp_path)
     command = json.loads(PROJECT_FILE.read_text(encoding="utf-8"))["commands"][1]
-    mapfile = folder / "levels" / "showcase" / "fast-fall.tmx"
+    mapfile = small_map(folder)
     result = run_like_tiled(command, mapfile, folder / "levels")
     assert result.returncode == 0, result.stdout + result.stderr
     assert result.stdout.startswith("checked 1 map(s): all playable, 1 solved")
@@ -196,7 +205,7 @@ def test_the_commands_run_no_code_from_the_working_folder(tmp_path: Path, which:
         (top / "argparse.py").write_text(plant, encoding="utf-8")
     mapfile = folder / "levels" / "no such map.tmx"  # refused at once: nothing plays
     if which == 1:
-        mapfile = folder / "levels" / "showcase" / "fast-fall.tmx"
+        mapfile = small_map(folder)
     command = json.loads(PROJECT_FILE.read_text(encoding="utf-8"))["commands"][which]
     env_before = files_in(folder)
     result = run_like_tiled(command, mapfile, folder / "levels")
