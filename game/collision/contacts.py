@@ -34,7 +34,7 @@ frozenset({(1, 2)})
 from __future__ import annotations
 
 from collections import deque
-from collections.abc import Iterable
+from collections.abc import Collection
 from dataclasses import dataclass
 from enum import Enum
 from typing import Any, Generic
@@ -80,12 +80,12 @@ class ContactTracker(Generic[K]):
         self.touching: frozenset[tuple[K, K]] = frozenset()
         self.log: deque[ContactEvent[K]] = deque(maxlen=log_size)
 
-    def update(self, touching: Iterable[tuple[K, K]]) -> ContactChanges[K]:
+    def update(self, touching: Collection[tuple[K, K]]) -> ContactChanges[K]:
         """Take this tick's whole set of touching pairs; return the ones that changed."""
         self.tick += 1
+        if not touching and not self.touching:  # nothing touched then or now: nothing changed
+            return NOTHING_CHANGED  # (most ticks: asked before a set is made of nothing)
         now = frozenset(pair_of(a, b) for a, b in touching)
-        if not now and not self.touching:  # nothing touched then or now: nothing changed
-            return NOTHING_CHANGED
         changes = ContactChanges(started=now - self.touching, ended=self.touching - now)
         self.touching = now
         for pair in sorted(changes.ended):  # endings first: a hand-over reads in order

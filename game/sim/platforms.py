@@ -291,14 +291,13 @@ class PlatformIndex:
         off the map, which any box may meet)."""
         found: set[Platform] = set(self.outside)
         low_x, low_y, high_x, high_y = self.bounds
+        # the way to find them, chosen once for all the boxes
+        touching = self.routes_touching if self.few_routes() is not None else self.cells_touching
         for x, y, w, h in boxes:
             if not (self.cells and w > 0 and h > 0 and x <= high_x and low_x <= x + w
                     and y <= high_y and low_y <= y + h):
                 continue  # nowhere near any route (or NaN)
-            if self.few_routes() is not None:
-                found.update(self.routes_touching(x, y, x + w, y + h))
-            else:
-                found.update(self.cells_touching(x, y, x + w, y + h))
+            found.update(touching(x, y, x + w, y + h))
         return found
 
     def routes_touching(self, left: float, top: float, right: float, bottom: float,
@@ -344,7 +343,10 @@ class PlatformIndex:
             near = self.routes_touching(left, top, right, bottom)
         else:
             near = self.cells_touching(left, top, right, bottom)
-        return [platform for platform in (*near, *self.outside) if platform is not leaving_out]
+        if self.outside:
+            near = [*near, *self.outside]
+        # a new list only when one is left out (the bodies' own moves leave out none)
+        return near if leaving_out is None else [p for p in near if p is not leaving_out]
 
     def entries_in(self, left: float, top: float, right: float, bottom: float,
                    leaving_out: Platform | None = None) -> list[Entry]:

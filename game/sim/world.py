@@ -305,14 +305,11 @@ class World:
         touches it or passes over it (a jump over the flag counts; walking past below its
         foot, or along a floor more than the flag's height above its top, does not): the
         respawn point moves there, and never back to an earlier flag walked past again."""
-        changes = self.contacts.update(touching)
-        entered = [key for pair in changes.started for key in pair]
+        entered = [key for pair in self.contacts.update(touching).started for key in pair]
         events.extend(Event(EventKind.EXIT) for kind, _ in entered if kind == "exit")
         for number, flag in enumerate(self._checkpoint_list):
-            if number in self.checkpoints_counted:
-                continue
-            if (("checkpoint", number) in entered
-                    or self._passed_over(was, edges, flag.box)):
+            if number not in self.checkpoints_counted and (
+                    ("checkpoint", number) in entered or self._passed_over(was, edges, flag.box)):
                 self.checkpoints_counted.add(number)
                 self.spawn = self._checkpoint_spawn(number, lookups.checkpoint_spawn)
                 self.checkpoint_reached = number
@@ -386,7 +383,7 @@ class World:
                       if crossed(path, flag, edges)}
         pairs |= {(PLAYER_KEY, ("enemy", number))
                   for number, enemy in self.enemy_by_number.items()
-                  if enemy.alive() and crossed(path, enemy, edges)}
+                  if crossed(path, enemy, edges) and enemy.alive()}
         if not self.hazard_cells.reached_by(*edges):
             return pairs  # no spike anywhere near the path
         cols = self.grid.cols
