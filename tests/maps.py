@@ -141,6 +141,13 @@ LEDGE = ["                              ",
          "                              "]
 
 
+# A block on the floor between the spawn and the Exit: a map whose only route jumps it, checked
+# and solved in a moment with the default physics.
+HOP_OVER = ["        ",
+            "P   #  D",
+            "########"]
+
+
 # A four-tile ceiling (columns 5-8, row 2) over a floor: for jumps that clip its corners.
 CEILING = ["                    ",
            "                    ",

@@ -43,7 +43,7 @@ from game.sim.snapshot import Snapshot
 from game.sim.tuning import Tuning
 from game.sim.world import World
 from tests.in_process import call_main
-from tests.maps import write_tmx
+from tests.maps import HOP_OVER, write_tmx
 from tests.shipped_fills import share_fills
 from tests.shipped_solves import solved
 
@@ -52,7 +52,6 @@ SCRIPTS = Path(__file__).resolve().parent / "scripts"
 SHIPPED = sorted(LEVELS_DIR.glob("*.tmx"))
 FIRST = LEVELS_DIR / "01-first-steps.tmx"
 SOLID_GID = 1  # the first tile of assets/tiles.tsx is Solid
-HOP_OVER = ["        ", "P   #  D", "########"]  # a map whose only route jumps a block
 
 
 def state(world: World) -> tuple[object, ...]:

@@ -27,7 +27,7 @@ from game.levels.project import (
 )
 from game.sim.tuning import Tuning
 from tests.in_process import call_main
-from tests.maps import write_tmx
+from tests.maps import HOP_OVER, write_tmx
 
 TILED = shutil.which("tiled")
 
@@ -156,8 +156,7 @@ def small_map(project: Path) -> Path:
     """A map in a folder of the project whose only route jumps a block: checked and solved
     in a moment, with the default physics, whose reach the checker knows already (the
     shipped maps are checked in tests/test_levels.py, and solved in tests/test_solver.py)."""
-    return write_tmx(project / "levels" / "showcase", ["        ", "P   #  D", "########"],
-                     name="hop over.tmx")
+    return write_tmx(project / "levels" / "showcase", HOP_OVER, name="hop over.tmx")
 
 
 def test_the_check_command_works_from_a_folder_with_spaces(tmp_path: Path) -> None:
