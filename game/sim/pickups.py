@@ -67,8 +67,8 @@ class TriggerCells:
 
     def reached_by(self, left: float, top: float, right: float, bottom: float) -> bool:
         """Does the region reach a cell that holds a trigger? (Every tick asks this twice,
-        for the triggers and for the spikes, so it is a plain loop: ``any()`` over a
-        generator took half as long again.)"""
+        for the triggers and for the spikes, so it is a plain loop: ``any()`` would make a
+        generator on every call.)"""
         try:
             cols: Sequence[int] = range(floor(left / self.tile_w), floor(right / self.tile_w) + 1)
             rows = range(floor(top / self.tile_h), floor(bottom / self.tile_h) + 1)
